@@ -1,0 +1,70 @@
+//! Closed-form results the kernel is checked against. Plain `f64` with `std` math, written from
+//! the formulas in REFERENCE.md and the cited papers, never calling the kernel.
+
+use std::f64::consts::PI;
+
+/// The linear spring-dashpot's free oscillator for stiffness `k`, restitution `e`, mass `m`:
+/// `(w0, beta, wd)`.
+pub fn oscillator(stiffness: f64, restitution: f64, mass: f64) -> (f64, f64, f64) {
+    let w0 = (stiffness / mass).sqrt();
+    let zeta = if restitution == 0.0 {
+        1.0
+    } else {
+        let l = restitution.ln();
+        -l / (PI * PI + l * l).sqrt()
+    };
+    let beta = zeta * w0;
+    let wd = (w0 * w0 - beta * beta).max(0.0).sqrt();
+    (w0, beta, wd)
+}
+
+/// Free contact duration `t_c = pi / wd`.
+pub fn contact_duration(stiffness: f64, restitution: f64, mass: f64) -> f64 {
+    let (_, _, wd) = oscillator(stiffness, restitution, mass);
+    PI / wd
+}
+
+/// Maximum overlap of a free impact at speed `v0`: `(v0 / w0) exp(-(beta / wd) atan(wd / beta))`
+/// (`v0 / w0` without damping).
+pub fn max_overlap(stiffness: f64, restitution: f64, mass: f64, speed: f64) -> f64 {
+    let (w0, beta, wd) = oscillator(stiffness, restitution, mass);
+    if beta == 0.0 {
+        return speed / w0;
+    }
+    speed / w0 * (-(beta / wd) * (wd / beta).atan()).exp()
+}
+
+/// Rebound ratio of an impact whose normal force is clipped at zero (never attractive):
+/// the force vanishes at `wd t = 2 atan(wd / beta)`, and the speed then is
+/// `v0 exp(-(2 beta / wd) atan(wd / beta))` (Schwager & Poeschel 2007).
+pub fn clamped_restitution(restitution: f64) -> f64 {
+    if restitution == 1.0 {
+        return 1.0;
+    }
+    if restitution == 0.0 {
+        // Critical damping: the force vanishes at t = 2 / beta, with speed v0 e^-2.
+        return (-2.0f64).exp();
+    }
+    // Only the ratio beta / wd = |ln e| / pi matters.
+    let ratio = -restitution.ln() / PI;
+    (-2.0 * ratio * (1.0 / ratio).atan()).exp()
+}
+
+/// Rigid-body outcome of a homogeneous solid sphere hitting a wall at `angle_deg` from the wall
+/// normal with restitution `e` and friction `mu`, no initial spin: `(e_t, w R / V)`.
+/// Gross sliding when `tan(theta) >= 3.5 mu (1 + e)`; rolling at separation otherwise.
+pub fn rigid_body_oblique(angle_deg: f64, restitution: f64, friction: f64) -> (f64, f64) {
+    let theta = angle_deg.to_radians();
+    let impulse = friction * (1.0 + restitution);
+    if theta.tan() >= 3.5 * impulse {
+        (1.0 - impulse / theta.tan(), 2.5 * impulse * theta.cos())
+    } else {
+        (5.0 / 7.0, 5.0 / 7.0 * theta.sin())
+    }
+}
+
+/// Rolling-onset time of a sphere launched sliding at `u0` without spin on a plate:
+/// `2 u0 / (7 mu g)`.
+pub fn rolling_onset(initial_speed: f64, friction: f64, gravity: f64) -> f64 {
+    2.0 * initial_speed / (7.0 * friction * gravity)
+}

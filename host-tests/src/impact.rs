@@ -1,0 +1,196 @@
+//! Drives one sphere into a wall with a kernel law and the kernel's symplectic Euler step, and
+//! reports what came out. Used by the normal-impact and oblique-impact tests.
+
+use soft_sphere::motion::advance_solid_sphere;
+use soft_sphere::{
+    ContactError, ContactForces, ContactLaw, Float, Interaction, MathBackend, NormalModel,
+    Rotation, Sphere, TangentialModel, TimeStep, Vec3, Wall,
+};
+
+/// What a wall impact produced.
+#[derive(Clone, Copy, Debug)]
+pub struct ImpactOutcome<F> {
+    /// The sphere just after it left the wall.
+    pub rebound: Sphere<F>,
+    /// Time from first touch to separation (s), the last step interpolated linearly in overlap.
+    pub contact_duration: f64,
+    /// Largest overlap seen (m).
+    pub max_overlap: f64,
+    /// Steps with the sphere touching the wall.
+    pub steps_in_contact: usize,
+}
+
+/// The floor `z = 0` with its normal up.
+pub fn floor<F: Float>() -> Wall<F> {
+    Wall::new(Vec3::ZERO, Vec3::new(F::ZERO, F::ZERO, F::ONE)).expect("the floor is valid")
+}
+
+/// A sphere just touching the floor, moving at `speed` at `angle_deg` from the floor's normal
+/// (tangential component along +x, normal component along -z), without spin.
+pub fn incoming_sphere<F: Float>(radius: F, density: F, speed: f64, angle_deg: f64) -> Sphere<F> {
+    let mut sphere = Sphere::solid(Vec3::new(F::ZERO, F::ZERO, radius), radius, density);
+    let theta = angle_deg.to_radians();
+    sphere.velocity = Vec3::new(
+        F::from_f64(speed * theta.sin()),
+        F::ZERO,
+        F::from_f64(-speed * theta.cos()),
+    );
+    sphere
+}
+
+/// Integrates `sphere` against `wall` until it separates (or `max_steps` pass), calling `observe`
+/// with the contact forces of every step in contact.
+///
+/// # Errors
+/// The first [`ContactError`] the kernel returns; `Err(None)` when the sphere had not separated
+/// after `max_steps`.
+pub fn wall_impact<F, N, T, M, R>(
+    law: &ContactLaw<F, N, T, M, R>,
+    mut sphere: Sphere<F>,
+    wall: &Wall<F>,
+    time_step: TimeStep<F>,
+    max_steps: usize,
+    mut observe: impl FnMut(&ContactForces<F>),
+) -> Result<ImpactOutcome<F>, Option<ContactError>>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    let dt = time_step.seconds().to_f64();
+    let mut state = T::State::default();
+    let mut touched = false;
+    let mut steps_in_contact = 0;
+    let mut max_overlap = 0.0f64;
+    let mut last_overlap = 0.0f64;
+    for step in 0..max_steps {
+        match law
+            .sphere_wall(&sphere, wall, &mut state, time_step)
+            .map_err(Some)?
+        {
+            Interaction::Touching(forces) => {
+                touched = true;
+                steps_in_contact += 1;
+                last_overlap = forces.overlap.to_f64();
+                max_overlap = max_overlap.max(last_overlap);
+                observe(&forces);
+                advance_solid_sphere(
+                    &mut sphere,
+                    forces.force_on_i(),
+                    forces.torque_on_i,
+                    time_step,
+                );
+            }
+            Interaction::Apart if touched => {
+                // Overlap went from last_overlap > 0 to the current (<= 0) over the previous step.
+                let now = (sphere.radius - wall.distance_to(sphere.position)).to_f64();
+                let fraction = last_overlap / (last_overlap - now);
+                let contact_duration = (step as f64 - 1.0 + fraction) * dt;
+                return Ok(ImpactOutcome {
+                    rebound: sphere,
+                    contact_duration,
+                    max_overlap,
+                    steps_in_contact,
+                });
+            }
+            Interaction::Apart => {
+                advance_solid_sphere(&mut sphere, Vec3::ZERO, Vec3::ZERO, time_step);
+            }
+        }
+    }
+    Err(None)
+}
+
+/// Rebound of an oblique wall impact, in the quantities the Kharaz experiment reports.
+#[derive(Clone, Copy, Debug)]
+pub struct Rebound {
+    /// `V_t,out / V_t,in` of the centre of mass.
+    pub tangential_restitution: f64,
+    /// Rebound angular velocity about the axis of rolling (rad/s), positive for forward roll.
+    pub spin: f64,
+    /// Angle of the rebound velocity from the wall normal (degrees).
+    pub rebound_angle_deg: f64,
+}
+
+/// The Kharaz oblique impact (REFERENCE 4.2): a sphere of `radius` and `density` hitting the floor
+/// at `speed` and `angle_deg` from its normal, integrated at `dt = t_c / steps_per_contact`.
+///
+/// # Panics
+/// When the step is unstable or the sphere does not rebound: both are test failures.
+pub fn oblique_rebound<F, N, T, M, R>(
+    law: &ContactLaw<F, N, T, M, R>,
+    radius: F,
+    density: F,
+    speed: f64,
+    angle_deg: f64,
+    steps_per_contact: f64,
+    observe: impl FnMut(&ContactForces<F>),
+) -> Rebound
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    let sphere = incoming_sphere(radius, density, speed, angle_deg);
+    let duration = law.contact_duration(sphere.mass);
+    let dt = law
+        .time_step(duration / F::from_f64(steps_per_contact), sphere.mass)
+        .expect("a stable step");
+    let max_steps = 20 * steps_per_contact as usize;
+    let out =
+        wall_impact(law, sphere, &floor(), dt, max_steps, observe).expect("the sphere rebounds");
+    let v_in = sphere.velocity;
+    let v_out = out.rebound.velocity;
+    Rebound {
+        tangential_restitution: (v_out.x / v_in.x).to_f64(),
+        spin: out.rebound.angular_velocity.y.to_f64(),
+        rebound_angle_deg: v_out.x.to_f64().atan2(v_out.z.to_f64()).to_degrees(),
+    }
+}
+
+/// Integrates two spheres through a collision until they separate (or `max_steps` pass), with
+/// fresh per-contact state, calling `observe` every step they touch. Returns the spheres after.
+///
+/// # Errors
+/// The first [`ContactError`]; `Err(None)` when they are still touching after `max_steps`.
+pub fn pair_collision<F, N, T, M, R>(
+    law: &ContactLaw<F, N, T, M, R>,
+    mut i: Sphere<F>,
+    mut j: Sphere<F>,
+    time_step: TimeStep<F>,
+    max_steps: usize,
+    mut observe: impl FnMut(&ContactForces<F>, &Sphere<F>, &Sphere<F>),
+) -> Result<(Sphere<F>, Sphere<F>), Option<ContactError>>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    let mut state = T::State::default();
+    let mut touched = false;
+    for _ in 0..max_steps {
+        match law
+            .sphere_sphere(&i, &j, &mut state, time_step)
+            .map_err(Some)?
+        {
+            Interaction::Touching(forces) => {
+                touched = true;
+                observe(&forces, &i, &j);
+                advance_solid_sphere(&mut i, forces.force_on_i(), forces.torque_on_i, time_step);
+                advance_solid_sphere(&mut j, forces.force_on_j(), forces.torque_on_j, time_step);
+            }
+            Interaction::Apart if touched => return Ok((i, j)),
+            Interaction::Apart => {
+                advance_solid_sphere(&mut i, Vec3::ZERO, Vec3::ZERO, time_step);
+                advance_solid_sphere(&mut j, Vec3::ZERO, Vec3::ZERO, time_step);
+            }
+        }
+    }
+    Err(None)
+}

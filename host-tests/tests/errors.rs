@@ -1,0 +1,302 @@
+//! Every error value is produced by the input that should produce it, nothing panics, and a
+//! rejected evaluation leaves the caller's per-contact state exactly as it was.
+
+use soft_sphere::{
+    ContactError, ContactLaw, Frictionless, Interaction, LinearSpringDashpot, ModelAA, Parameter,
+    ParameterError, Sphere, SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
+};
+
+fn law() -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
+    let normal = LinearSpringDashpot::new(1.0e4, 0.8).unwrap();
+    ContactLaw::new(
+        normal,
+        ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+    )
+}
+
+fn touching_pair() -> (Sphere<f64>, Sphere<f64>) {
+    let mut i = Sphere::solid(Vec3::new(0.0, 0.0, 0.0), 1.0e-3, 2500.0);
+    let mut j = Sphere::solid(Vec3::new(1.9e-3, 0.0, 0.0), 1.0e-3, 2500.0);
+    i.velocity = Vec3::new(0.1, 0.05, 0.0);
+    j.angular_velocity = Vec3::new(0.0, 0.0, 30.0);
+    (i, j)
+}
+
+#[test]
+fn normal_law_parameters_are_validated() {
+    use ParameterError::*;
+    let k = Parameter::NormalStiffness;
+    assert_eq!(LinearSpringDashpot::new(f64::NAN, 0.5), Err(NonFinite(k)));
+    assert_eq!(
+        LinearSpringDashpot::new(f64::INFINITY, 0.5),
+        Err(NonFinite(k))
+    );
+    assert_eq!(LinearSpringDashpot::new(0.0, 0.5), Err(NotPositive(k)));
+    assert_eq!(LinearSpringDashpot::new(-1.0, 0.5), Err(NotPositive(k)));
+    assert_eq!(
+        LinearSpringDashpot::new(1.0, f64::NAN),
+        Err(NonFinite(Parameter::Restitution))
+    );
+    assert_eq!(
+        LinearSpringDashpot::new(1.0, -0.01),
+        Err(RestitutionOutOfRange)
+    );
+    assert_eq!(
+        LinearSpringDashpot::new(1.0, 1.01),
+        Err(RestitutionOutOfRange)
+    );
+    assert_eq!(
+        LinearSpringDashpot::new(1.0f32, 1.0 + f32::EPSILON),
+        Err(RestitutionOutOfRange)
+    );
+    // The ends of [0, 1] are valid: critical damping and no damping.
+    assert_eq!(
+        LinearSpringDashpot::new(1.0, 0.0).unwrap().damping_ratio(),
+        1.0
+    );
+    assert_eq!(
+        LinearSpringDashpot::new(1.0, 1.0).unwrap().damping_ratio(),
+        0.0
+    );
+}
+
+#[test]
+fn tangential_parameters_are_validated() {
+    use ParameterError::*;
+    let new = TangentialParameters::<f64>::new;
+    assert_eq!(
+        new(f64::NAN, 0.5, 0.3),
+        Err(NonFinite(Parameter::TangentialStiffness))
+    );
+    assert_eq!(
+        new(0.0, 0.5, 0.3),
+        Err(NotPositive(Parameter::TangentialStiffness))
+    );
+    assert_eq!(
+        new(-5.0, 0.5, 0.3),
+        Err(NotPositive(Parameter::TangentialStiffness))
+    );
+    assert_eq!(
+        new(1.0, -0.1, 0.3),
+        Err(Negative(Parameter::TangentialDampingRatio))
+    );
+    assert_eq!(
+        new(1.0, f64::INFINITY, 0.3),
+        Err(NonFinite(Parameter::TangentialDampingRatio))
+    );
+    assert_eq!(new(1.0, 0.5, -0.3), Err(Negative(Parameter::Friction)));
+    assert_eq!(
+        new(1.0, 0.5, f64::INFINITY),
+        Err(NonFinite(Parameter::Friction))
+    );
+    assert!(
+        new(1.0, 0.0, 0.0).is_ok(),
+        "no dashpot and no friction are valid"
+    );
+}
+
+#[test]
+fn walls_are_validated() {
+    let up = Vec3::new(0.0, 0.0, 2.0);
+    assert_eq!(
+        Wall::new(Vec3::new(f64::NAN, 0.0, 0.0), up),
+        Err(ParameterError::NonFinite(Parameter::Wall))
+    );
+    assert_eq!(
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, f64::INFINITY, 0.0)),
+        Err(ParameterError::NonFinite(Parameter::Wall))
+    );
+    assert_eq!(
+        Wall::new(Vec3::ZERO, Vec3::new(1e200, 1e200, 0.0)),
+        Err(ParameterError::NonFinite(Parameter::Wall))
+    );
+    assert_eq!(
+        Wall::new(Vec3::<f64>::ZERO, Vec3::ZERO),
+        Err(ParameterError::NotPositive(Parameter::Wall))
+    );
+    // A valid normal is normalised.
+    assert_eq!(
+        Wall::new(Vec3::ZERO, up).unwrap().normal(),
+        Vec3::new(0.0, 0.0, 1.0)
+    );
+}
+
+#[test]
+fn time_steps_are_checked_against_the_analytic_stability_limit() {
+    use ParameterError::*;
+    let (k_n, k_t, e, ratio, mass) = (1.0e4, 3.0e3, 0.8f64, 0.5, 1.0e-5);
+    let law = law();
+    assert_eq!(
+        law.time_step(f64::NAN, mass),
+        Err(NonFinite(Parameter::TimeStep))
+    );
+    assert_eq!(
+        law.time_step(0.0, mass),
+        Err(NotPositive(Parameter::TimeStep))
+    );
+    assert_eq!(
+        law.time_step(-1e-6, mass),
+        Err(NotPositive(Parameter::TimeStep))
+    );
+    assert_eq!(law.time_step(1e-6, 0.0), Err(NotPositive(Parameter::Mass)));
+    assert_eq!(
+        law.time_step(1e-6, f64::INFINITY),
+        Err(NonFinite(Parameter::Mass))
+    );
+
+    // Independent formula: dt < (2/w)(sqrt(1 + z^2) - z) for the normal mode (w0, zeta) and the
+    // tangential spring (k_t on 2/7 m*, dashpot eta_t = ratio * eta_n).
+    let bound = |w: f64, z: f64| 2.0 / w * ((1.0 + z * z).sqrt() - z);
+    let zeta = -e.ln() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
+    let eta_n = 2.0 * zeta * (mass * k_n).sqrt();
+    let normal_limit = bound((k_n / mass).sqrt(), zeta);
+    let m_t = 2.0 / 7.0 * mass;
+    let tangential_limit = bound(
+        (k_t / m_t).sqrt(),
+        ratio * eta_n / (2.0 * (k_t * m_t).sqrt()),
+    );
+    let limit = normal_limit.min(tangential_limit);
+    assert!((law.critical_time_step(mass) / limit - 1.0).abs() < 1e-12);
+    assert!(law.time_step(limit * 0.999, mass).is_ok());
+    match law.time_step(limit * 1.001, mass) {
+        Err(TimeStepUnstable {
+            time_step,
+            limit: reported,
+        }) => {
+            assert_eq!(time_step, limit * 1.001);
+            assert!((reported / limit - 1.0).abs() < 1e-12);
+        }
+        other => panic!("expected TimeStepUnstable, got {other:?}"),
+    }
+    // Without friction only the normal mode limits the step.
+    let frictionless = ContactLaw::new(*law.normal(), Frictionless);
+    assert!((frictionless.critical_time_step(mass) / normal_limit - 1.0).abs() < 1e-12);
+}
+
+/// Runs `evaluate` on a state holding a stored displacement and checks it fails with `expected`
+/// and leaves the state bit for bit as it was.
+fn rejects(
+    expected: ContactError,
+    evaluate: impl FnOnce(&mut SpringDisplacement<f64>) -> Result<Interaction<f64>, ContactError>,
+) {
+    let before = SpringDisplacement {
+        displacement: Vec3::new(1.0e-7, -2.0e-7, 3.0e-8),
+    };
+    let mut state = before;
+    assert_eq!(evaluate(&mut state), Err(expected));
+    assert_eq!(
+        state.displacement.to_array().map(f64::to_bits),
+        before.displacement.to_array().map(f64::to_bits)
+    );
+}
+
+#[test]
+fn bad_sphere_inputs_get_their_error_and_change_nothing() {
+    let law = law();
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    type Spoil = fn(&mut Sphere<f64>);
+    let cases: [(ContactError, Spoil); 9] = [
+        (ContactError::NonFiniteInput, |s| s.position.y = f64::NAN),
+        (ContactError::NonFiniteInput, |s| {
+            s.velocity.z = f64::INFINITY
+        }),
+        (ContactError::NonFiniteInput, |s| {
+            s.angular_velocity.x = f64::NEG_INFINITY
+        }),
+        (ContactError::NonFiniteInput, |s| s.radius = f64::NAN),
+        (ContactError::NonFiniteInput, |s| s.mass = f64::INFINITY),
+        (ContactError::NonPositiveRadius, |s| s.radius = 0.0),
+        (ContactError::NonPositiveRadius, |s| s.radius = -1.0e-3),
+        (ContactError::NonPositiveMass, |s| s.mass = 0.0),
+        (ContactError::NonPositiveMass, |s| s.mass = -1.0),
+    ];
+    for (expected, spoil) in cases {
+        let (mut i, j) = touching_pair();
+        spoil(&mut i);
+        rejects(expected, |state| law.sphere_sphere(&i, &j, state, dt));
+        rejects(expected, |state| law.sphere_sphere(&j, &i, state, dt));
+        let mut on_floor = Sphere::solid(Vec3::new(0.0, 0.0, 0.9e-3), 1.0e-3, 2500.0);
+        spoil(&mut on_floor);
+        rejects(expected, |state| {
+            law.sphere_wall(&on_floor, &floor, state, dt)
+        });
+    }
+}
+
+#[test]
+fn bad_wall_state_coincident_centres_and_overflow_get_their_errors() {
+    let law = law();
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let sphere = Sphere::solid(Vec3::new(0.0, 0.0, 0.9e-3), 1.0e-3, 2500.0);
+    let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let moving_nan = floor.with_velocity(Vec3::new(f64::NAN, 0.0, 0.0));
+    rejects(ContactError::NonFiniteInput, |state| {
+        law.sphere_wall(&sphere, &moving_nan, state, dt)
+    });
+    let moved_inf = floor.moved_to(Vec3::new(0.0, 0.0, f64::INFINITY));
+    rejects(ContactError::NonFiniteInput, |state| {
+        law.sphere_wall(&sphere, &moved_inf, state, dt)
+    });
+
+    let (i, _) = touching_pair();
+    rejects(ContactError::CoincidentCentres, |state| {
+        law.sphere_sphere(&i, &i, state, dt)
+    });
+
+    // Finite inputs whose relative velocity overflows.
+    let (mut i, mut j) = touching_pair();
+    i.velocity.x = f64::MAX;
+    j.velocity.x = -f64::MAX;
+    rejects(ContactError::NonFiniteResult, |state| {
+        law.sphere_sphere(&i, &j, state, dt)
+    });
+}
+
+#[test]
+fn single_precision_overflow_and_tiny_separations_are_defined() {
+    let normal = LinearSpringDashpot::new(1.0e4f32, 0.8).unwrap();
+    let law = ContactLaw::new(
+        normal,
+        Stateless(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+    );
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let mut i = Sphere::solid(Vec3::new(0.0f32, 0.0, 0.0), 1.0e-3, 2500.0);
+    let mut j = Sphere::solid(Vec3::new(1.0e-20, 0.0, 0.0), 1.0e-3, 2500.0);
+    // Centres 1e-20 m apart: the squared distance underflows f32's normal range.
+    assert_eq!(
+        law.sphere_sphere(&i, &j, &mut (), dt),
+        Err(ContactError::CoincidentCentres)
+    );
+    j.position.x = 1.9e-3;
+    i.velocity.x = 3.0e38;
+    j.velocity.x = -3.0e38;
+    assert_eq!(
+        law.sphere_sphere(&i, &j, &mut (), dt),
+        Err(ContactError::NonFiniteResult)
+    );
+}
+
+#[test]
+fn separating_resets_the_state_and_touching_advances_it() {
+    let law = law();
+    let dt = law.time_step(1e-6, 1e-6).unwrap();
+    let (i, mut j) = touching_pair();
+    let mut state = SpringDisplacement {
+        displacement: Vec3::new(0.0, 1e-7, 0.0),
+    };
+    let touching = law.sphere_sphere(&i, &j, &mut state, dt).unwrap();
+    assert!(touching.forces().is_some());
+    assert_ne!(
+        state,
+        SpringDisplacement {
+            displacement: Vec3::new(0.0, 1e-7, 0.0)
+        }
+    );
+    j.position.x = 2.5e-3;
+    assert_eq!(
+        law.sphere_sphere(&i, &j, &mut state, dt),
+        Ok(Interaction::Apart)
+    );
+    assert_eq!(state, SpringDisplacement::default());
+}

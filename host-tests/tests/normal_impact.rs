@@ -1,0 +1,152 @@
+//! Normal impact against the analytic linear spring-dashpot solution (REFERENCE 2 and 4.1):
+//! rebound ratio e, duration t_c, peak overlap, and the clamped-force restitution of
+//! Schwager & Poeschel (2007).
+
+use host_tests::analytic;
+use host_tests::impact::{floor, incoming_sphere, wall_impact};
+use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, Micromath};
+
+const STIFFNESS: f64 = 1000.0;
+const RADIUS: f64 = 2.5e-3;
+const DENSITY: f64 = 2700.0;
+const SPEED: f64 = 3.9;
+const RESTITUTIONS: [f64; 7] = [0.1, 0.3, 0.5, 0.7, 0.9, 0.98, 1.0];
+
+struct Measured {
+    rebound_ratio: f64,
+    duration: f64,
+    max_overlap: f64,
+    mass: f64,
+}
+
+fn head_on_f64(restitution: f64, clamped: bool, steps_per_contact: f64) -> Measured {
+    let mut normal = LinearSpringDashpot::new(STIFFNESS, restitution).unwrap();
+    if clamped {
+        normal = normal.with_attraction_clamped();
+    }
+    let law = ContactLaw::new(normal, Frictionless);
+    let sphere = incoming_sphere(RADIUS, DENSITY, SPEED, 0.0);
+    let mass = sphere.mass;
+    let duration = analytic::contact_duration(STIFFNESS, restitution, mass);
+    let dt = law.time_step(duration / steps_per_contact, mass).unwrap();
+    let outcome = wall_impact(
+        &law,
+        sphere,
+        &floor(),
+        dt,
+        10 * steps_per_contact as usize,
+        |_| {},
+    )
+    .expect("the sphere rebounds");
+    Measured {
+        rebound_ratio: outcome.rebound.velocity.z / SPEED,
+        duration: outcome.contact_duration,
+        max_overlap: outcome.max_overlap,
+        mass,
+    }
+}
+
+#[test]
+fn free_impact_rebounds_with_e_and_lasts_t_c() {
+    for e in RESTITUTIONS {
+        let m = head_on_f64(e, false, 20_000.0);
+        let t_c = analytic::contact_duration(STIFFNESS, e, m.mass);
+        let peak = analytic::max_overlap(STIFFNESS, e, m.mass, SPEED);
+        assert!(
+            (m.rebound_ratio - e).abs() < 1e-4,
+            "e = {e}: rebound ratio {}",
+            m.rebound_ratio
+        );
+        assert!(
+            (m.duration / t_c - 1.0).abs() < 1e-4,
+            "e = {e}: duration {} vs t_c {t_c}",
+            m.duration
+        );
+        assert!(
+            (m.max_overlap / peak - 1.0).abs() < 1e-4,
+            "e = {e}: peak overlap {} vs {peak}",
+            m.max_overlap
+        );
+    }
+}
+
+#[test]
+fn clamped_impact_matches_schwager_poeschel() {
+    // The published figures (REFERENCE 2): 0.5 -> 0.5503, 0.9 -> 0.9020.
+    assert!((analytic::clamped_restitution(0.5) - 0.5503).abs() < 5e-5);
+    assert!((analytic::clamped_restitution(0.9) - 0.9020).abs() < 5e-5);
+    for e in RESTITUTIONS {
+        let m = head_on_f64(e, true, 20_000.0);
+        let expected = analytic::clamped_restitution(e);
+        assert!(
+            (m.rebound_ratio - expected).abs() < 1e-4,
+            "e = {e}: clamped rebound {} vs analytic {expected}",
+            m.rebound_ratio
+        );
+    }
+}
+
+#[test]
+fn kernel_contact_duration_matches_the_closed_form() {
+    for e in RESTITUTIONS {
+        let mass = 1.7e-4;
+        let law = ContactLaw::new(
+            LinearSpringDashpot::new(STIFFNESS, e).unwrap(),
+            Frictionless,
+        );
+        let t_c = analytic::contact_duration(STIFFNESS, e, mass);
+        assert!(
+            (law.contact_duration(mass) / t_c - 1.0).abs() < 1e-12,
+            "e = {e}"
+        );
+        assert!(
+            (law.recommended_time_step(mass) * 50.0 / t_c - 1.0).abs() < 1e-12,
+            "e = {e}"
+        );
+    }
+    // Critical damping: the free contact never ends; the clamped one ends at t = 2 / beta.
+    let critical = LinearSpringDashpot::new(STIFFNESS, 0.0).unwrap();
+    let law = ContactLaw::new(critical, Frictionless);
+    assert!(law.contact_duration(1.0).is_infinite());
+    let law = ContactLaw::new(critical.with_attraction_clamped(), Frictionless);
+    let beta = (STIFFNESS / 1.0f64).sqrt();
+    assert!((law.contact_duration(1.0) * beta / 2.0 - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn first_order_error_shrinks_with_the_step() {
+    // The symplectic Euler step is first order: halving dt roughly halves the rebound error.
+    let coarse = (head_on_f64(0.1, false, 50.0).rebound_ratio - 0.1).abs();
+    let fine = (head_on_f64(0.1, false, 400.0).rebound_ratio - 0.1).abs();
+    assert!(
+        coarse > 1e-3,
+        "t_c/50 should show the integrator's error at e = 0.1 ({coarse})"
+    );
+    assert!(
+        fine < coarse / 4.0,
+        "error {fine} at t_c/400 vs {coarse} at t_c/50"
+    );
+}
+
+#[test]
+fn single_precision_and_micromath_rebound_close_to_e() {
+    // f32 and the approximate backend, at t_c/2000: bounds stated in the README.
+    for e in [0.5f32, 0.9, 1.0] {
+        let normal = LinearSpringDashpot::new(STIFFNESS as f32, e).unwrap();
+        let sphere = incoming_sphere(RADIUS as f32, DENSITY as f32, SPEED, 0.0);
+        let t_c = analytic::contact_duration(STIFFNESS, e as f64, sphere.mass as f64) as f32;
+        let law = ContactLaw::new(normal, Frictionless);
+        let dt = law.time_step(t_c / 2000.0, sphere.mass).unwrap();
+        let exact = wall_impact(&law, sphere, &floor(), dt, 40_000, |_| {}).unwrap();
+        let ratio = exact.rebound.velocity.z as f64 / SPEED;
+        assert!((ratio - e as f64).abs() < 2e-3, "f32 libm e = {e}: {ratio}");
+
+        let fast = law.with_backend::<Micromath>();
+        let approx = wall_impact(&fast, sphere, &floor(), dt, 40_000, |_| {}).unwrap();
+        let ratio = approx.rebound.velocity.z as f64 / SPEED;
+        assert!(
+            (ratio - e as f64).abs() < 1e-2,
+            "f32 micromath e = {e}: {ratio}"
+        );
+    }
+}

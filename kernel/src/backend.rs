@@ -1,0 +1,91 @@
+//! Math backends: where `sqrt`, `1/sqrt`, `atan2` and `ln` come from.
+//!
+//! The backend is a type parameter of the contact law, so two backends can be compared in one
+//! program. [`Libm`] is the default: portable, deterministic across targets, `sqrt` correctly
+//! rounded. [`Micromath`] is micromath's fast bit-level approximations, `f32` only; its error is
+//! large (a few percent for `sqrt` and `1/sqrt`, about 0.003 rad for `atan2`) and is measured by
+//! the host-tests, not assumed.
+
+/// The transcendental functions the kernel needs, for one precision `F`.
+///
+/// Implementations must be pure functions of their arguments so the kernel stays deterministic.
+pub trait MathBackend<F>: Copy + Default + core::fmt::Debug + 'static {
+    /// Square root of a non-negative number.
+    fn sqrt(x: F) -> F;
+    /// `1 / sqrt(x)` for a positive number.
+    fn inv_sqrt(x: F) -> F;
+    /// Four-quadrant arctangent of `y / x`, in `[-pi, pi]`.
+    fn atan2(y: F, x: F) -> F;
+    /// Natural logarithm of a positive number.
+    fn ln(x: F) -> F;
+}
+
+/// The `libm` crate: pure-Rust ports of musl's math, identical on every target.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Libm;
+
+impl MathBackend<f32> for Libm {
+    #[inline(always)]
+    fn sqrt(x: f32) -> f32 {
+        libm::sqrtf(x)
+    }
+    #[inline(always)]
+    fn inv_sqrt(x: f32) -> f32 {
+        1.0 / libm::sqrtf(x)
+    }
+    #[inline(always)]
+    fn atan2(y: f32, x: f32) -> f32 {
+        libm::atan2f(y, x)
+    }
+    #[inline(always)]
+    fn ln(x: f32) -> f32 {
+        libm::logf(x)
+    }
+}
+
+impl MathBackend<f64> for Libm {
+    #[inline(always)]
+    fn sqrt(x: f64) -> f64 {
+        libm::sqrt(x)
+    }
+    #[inline(always)]
+    fn inv_sqrt(x: f64) -> f64 {
+        1.0 / libm::sqrt(x)
+    }
+    #[inline(always)]
+    fn atan2(y: f64, x: f64) -> f64 {
+        libm::atan2(y, x)
+    }
+    #[inline(always)]
+    fn ln(x: f64) -> f64 {
+        libm::log(x)
+    }
+}
+
+/// The `micromath` crate's approximations, used as they are (no refinement step), `f32` only.
+///
+/// `sqrt` and `1/sqrt` are single bit-manipulation guesses (a few percent error); `atan2` is a
+/// rational approximation (about 0.003 rad). The kernel's overlap formula keeps its relative
+/// accuracy with an approximate square root; force magnitudes inherit the `1/sqrt` error through
+/// the contact normal.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Micromath;
+
+impl MathBackend<f32> for Micromath {
+    #[inline(always)]
+    fn sqrt(x: f32) -> f32 {
+        micromath::F32(x).sqrt().0
+    }
+    #[inline(always)]
+    fn inv_sqrt(x: f32) -> f32 {
+        micromath::F32(x).invsqrt().0
+    }
+    #[inline(always)]
+    fn atan2(y: f32, x: f32) -> f32 {
+        micromath::F32(y).atan2(micromath::F32(x)).0
+    }
+    #[inline(always)]
+    fn ln(x: f32) -> f32 {
+        micromath::F32(x).ln().0
+    }
+}

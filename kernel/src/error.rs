@@ -1,0 +1,127 @@
+//! Error values. The kernel never panics on bad input; it returns one of these and leaves every
+//! piece of caller state exactly as it was.
+
+use core::fmt;
+
+/// Which constructor argument an error is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Parameter {
+    /// Normal spring stiffness `k_n`.
+    NormalStiffness,
+    /// Tangential spring stiffness `k_t`.
+    TangentialStiffness,
+    /// Coefficient of restitution `e`.
+    Restitution,
+    /// Ratio of tangential to normal damping, `eta_t / eta_n`.
+    TangentialDampingRatio,
+    /// Coulomb friction coefficient `mu`.
+    Friction,
+    /// A mass or effective mass.
+    Mass,
+    /// A radius.
+    Radius,
+    /// A time step.
+    TimeStep,
+    /// A wall's normal vector or reference point.
+    Wall,
+}
+
+/// A parameter rejected by a constructor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParameterError {
+    /// The value is NaN or infinite.
+    NonFinite(Parameter),
+    /// The value must be strictly positive (stiffness, mass, radius, time step) or, for a wall
+    /// normal, non-zero.
+    NotPositive(Parameter),
+    /// The value must be at least zero (friction, tangential damping ratio).
+    Negative(Parameter),
+    /// The coefficient of restitution must lie in `[0, 1]`.
+    RestitutionOutOfRange,
+    /// The time step is at or past the explicit-integration stability limit of the law for the
+    /// smallest effective mass the caller declared. `limit` is that bound in seconds (f64 for
+    /// display; the law computed it in its own precision).
+    TimeStepUnstable {
+        /// The requested step.
+        time_step: f64,
+        /// The largest stable step for this law and mass.
+        limit: f64,
+    },
+}
+
+impl fmt::Display for ParameterError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFinite(p) => write!(f, "{p:?} is not finite"),
+            Self::NotPositive(p) => write!(f, "{p:?} must be positive"),
+            Self::Negative(p) => write!(f, "{p:?} must not be negative"),
+            Self::RestitutionOutOfRange => write!(f, "restitution must lie in [0, 1]"),
+            Self::TimeStepUnstable { time_step, limit } => write!(
+                f,
+                "time step {time_step:e} s is not below the stability limit {limit:e} s"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for ParameterError {}
+
+/// Why one contact evaluation was rejected. When an evaluation returns an error, the per-contact
+/// state and any history store it was given are unchanged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ContactError {
+    /// A position, velocity, angular velocity, radius, mass or wall field is NaN or infinite.
+    NonFiniteInput,
+    /// A radius is zero or negative.
+    NonPositiveRadius,
+    /// A mass is zero or negative.
+    NonPositiveMass,
+    /// The two centres coincide (their squared distance is below the smallest normal float), so
+    /// the contact normal is undefined.
+    CoincidentCentres,
+    /// The inputs were finite but the force, torque or new state overflowed.
+    NonFiniteResult,
+    /// A new contact needs a slot in a [`ContactHistory`](crate::ContactHistory) that is full.
+    HistoryFull,
+}
+
+impl fmt::Display for ContactError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = match self {
+            Self::NonFiniteInput => "an input is NaN or infinite",
+            Self::NonPositiveRadius => "a radius is zero or negative",
+            Self::NonPositiveMass => "a mass is zero or negative",
+            Self::CoincidentCentres => "the sphere centres coincide",
+            Self::NonFiniteResult => "the contact force overflowed",
+            Self::HistoryFull => "the contact-history store is full",
+        };
+        f.write_str(text)
+    }
+}
+
+impl core::error::Error for ContactError {}
+
+/// Checks a value that must be finite and strictly positive.
+pub(crate) fn positive<F: crate::Float>(value: F, what: Parameter) -> Result<F, ParameterError> {
+    if !value.is_finite() {
+        Err(ParameterError::NonFinite(what))
+    } else if value > F::ZERO {
+        Ok(value)
+    } else {
+        Err(ParameterError::NotPositive(what))
+    }
+}
+
+/// Checks a value that must be finite and at least zero.
+pub(crate) fn non_negative<F: crate::Float>(
+    value: F,
+    what: Parameter,
+) -> Result<F, ParameterError> {
+    if !value.is_finite() {
+        Err(ParameterError::NonFinite(what))
+    } else if value >= F::ZERO {
+        Ok(value)
+    } else {
+        Err(ParameterError::Negative(what))
+    }
+}

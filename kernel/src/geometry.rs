@@ -1,0 +1,131 @@
+//! Contact geometry and kinematics: normal, overlap, lever arms, effective mass and the bodies'
+//! velocities, for sphere-sphere and sphere-wall contacts.
+
+use crate::backend::MathBackend;
+use crate::body::{Sphere, Wall, effective_mass};
+use crate::error::ContactError;
+use crate::float::Float;
+use crate::vector::Vec3;
+
+/// The lever arm from a sphere's centre to the contact point, used for both the slip velocity and
+/// the torque (the same arm in both keeps the contact energetically passive).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LeverArm {
+    /// The radius `R` (rigid-body theory, the talk, LAMMPS `gran/hooke`). The default.
+    #[default]
+    Radius,
+    /// The distance from the centre to the contact plane: the plane of the two spheres'
+    /// intersection circle, `(d^2 + R_i^2 - R_j^2) / (2 d)`, or, for a wall, the distance to the
+    /// wall, `R - delta` (as MFiX does). Shorter than `R` by about the overlap; with very soft
+    /// springs that changes small-angle oblique impacts markedly.
+    ContactPlane,
+}
+
+/// One touching contact, seen from body i towards body j (for a wall, j is the wall).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ContactFrame<F> {
+    pub normal: Vec3<F>,
+    pub overlap: F,
+    pub arm_i: F,
+    pub arm_j: F,
+    pub effective_mass: F,
+    /// Translational velocity of j relative to i.
+    pub velocity: Vec3<F>,
+    pub angular_velocity_i: Vec3<F>,
+    pub angular_velocity_j: Vec3<F>,
+}
+
+/// Checks one sphere's fields (finiteness first, so the sign tests below never see NaN).
+#[inline(always)]
+fn validate<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
+    if !sphere.is_finite() {
+        Err(ContactError::NonFiniteInput)
+    } else if sphere.radius <= F::ZERO {
+        Err(ContactError::NonPositiveRadius)
+    } else if sphere.mass <= F::ZERO {
+        Err(ContactError::NonPositiveMass)
+    } else {
+        Ok(())
+    }
+}
+
+/// The contact between spheres i and j, `None` when they do not overlap.
+#[inline(always)]
+pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
+    i: &Sphere<F>,
+    j: &Sphere<F>,
+    lever_arm: LeverArm,
+) -> Result<Option<ContactFrame<F>>, ContactError> {
+    validate(i)?;
+    validate(j)?;
+    let offset = j.position - i.position;
+    let distance_squared = offset.norm_squared();
+    if distance_squared < F::MIN_POSITIVE {
+        return Err(ContactError::CoincidentCentres);
+    }
+    let reach = i.radius + j.radius;
+    if distance_squared >= reach * reach {
+        return Ok(None);
+    }
+    let inverse_distance = M::inv_sqrt(distance_squared);
+    let distance = distance_squared * inverse_distance;
+    // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an approximate
+    // square root, where S - d would cancel.
+    let overlap = (reach * reach - distance_squared) / (reach + distance);
+    let (arm_i, arm_j) = match lever_arm {
+        LeverArm::Radius => (i.radius, j.radius),
+        LeverArm::ContactPlane => {
+            let (ri, rj) = (i.radius * i.radius, j.radius * j.radius);
+            let half_inverse = F::HALF * inverse_distance;
+            (
+                ((distance_squared + ri - rj) * half_inverse).max_of(F::ZERO),
+                ((distance_squared + rj - ri) * half_inverse).max_of(F::ZERO),
+            )
+        }
+    };
+    Ok(Some(ContactFrame {
+        normal: offset * inverse_distance,
+        overlap,
+        arm_i,
+        arm_j,
+        effective_mass: effective_mass(i.mass, j.mass),
+        velocity: j.velocity - i.velocity,
+        angular_velocity_i: i.angular_velocity,
+        angular_velocity_j: j.angular_velocity,
+    }))
+}
+
+/// The contact between a sphere (body i) and a wall (body j), `None` when they do not overlap.
+#[inline(always)]
+pub(crate) fn sphere_wall<F: Float>(
+    sphere: &Sphere<F>,
+    wall: &Wall<F>,
+    lever_arm: LeverArm,
+) -> Result<Option<ContactFrame<F>>, ContactError> {
+    validate(sphere)?;
+    if !wall.is_finite() {
+        return Err(ContactError::NonFiniteInput);
+    }
+    let distance = wall.distance_to(sphere.position);
+    let overlap = sphere.radius - distance;
+    // A NaN overlap (finite inputs whose distance overflowed) falls through and is reported as
+    // a non-finite result.
+    if overlap <= F::ZERO {
+        return Ok(None);
+    }
+    let arm_i = match lever_arm {
+        LeverArm::Radius => sphere.radius,
+        LeverArm::ContactPlane => distance.max_of(F::ZERO),
+    };
+    Ok(Some(ContactFrame {
+        // From the sphere into the wall.
+        normal: -wall.normal(),
+        overlap,
+        arm_i,
+        arm_j: F::ZERO,
+        effective_mass: sphere.mass,
+        velocity: wall.velocity - sphere.velocity,
+        angular_velocity_i: sphere.angular_velocity,
+        angular_velocity_j: Vec3::ZERO,
+    }))
+}

@@ -1,0 +1,334 @@
+//! The contact law: model slots composed at compile time, evaluated for one contact at a time.
+
+use core::marker::PhantomData;
+
+use crate::backend::MathBackend;
+use crate::body::{Sphere, Wall};
+use crate::error::{ContactError, Parameter, ParameterError, positive};
+use crate::float::{Float, all_finite};
+use crate::geometry::{self, ContactFrame, LeverArm};
+use crate::normal::{NormalModel, NormalOscillator};
+use crate::rotation::{NonRotating, Rotating, Rotation};
+use crate::tangential::{ContactState, TangentialInput, TangentialModel};
+use crate::time_step::TimeStep;
+use crate::vector::Vec3;
+
+/// A soft-sphere contact law built from slots: `N` the normal law, `T` the tangential law,
+/// `M` the math backend, `R` whether rotation counts. Slots that a scene does not need are
+/// zero-sized ([`Frictionless`](crate::Frictionless), [`NonRotating`]) and their work is
+/// removed at compile time.
+///
+/// Build it with [`ContactLaw::new`] ([`Libm`](crate::Libm) backend, rotating spheres), then optionally
+/// [`with_backend`](ContactLaw::with_backend), [`without_rotation`](ContactLaw::without_rotation)
+/// and [`with_lever_arm`](ContactLaw::with_lever_arm).
+#[derive(Clone, Copy, Debug)]
+pub struct ContactLaw<F: Float, N, T, M = <F as Float>::DefaultBackend, R = Rotating> {
+    normal: N,
+    tangential: T,
+    lever_arm: LeverArm,
+    slots: Slots<F, M, R>,
+}
+
+/// Marks the type-only slots without owning them (keeps the law `Send`, `Sync` and `Copy`).
+type Slots<F, M, R> = PhantomData<fn() -> (F, M, R)>;
+
+/// The forces and torques of one touching contact. Forces act on body j; body i receives the
+/// negative (action and reaction). For a sphere-wall contact the sphere is body i.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactForces<F> {
+    /// Unit normal from i to j (for a wall: from the sphere into the wall).
+    pub normal: Vec3<F>,
+    /// Overlap `delta > 0` (m).
+    pub overlap: F,
+    /// Normal force on j along `normal` (N); positive pushes the bodies apart, negative is the
+    /// dashpot's pull at the end of an unclamped contact.
+    pub normal_force: F,
+    /// Tangential force on j (N); `|tangential_force| <= mu |normal_force|`.
+    pub tangential_force: Vec3<F>,
+    /// Torque on i about its centre (N m): `-a_i n x F_t`.
+    pub torque_on_i: Vec3<F>,
+    /// Torque on j about its centre (N m): `-a_j n x F_t` (zero for a wall).
+    pub torque_on_j: Vec3<F>,
+    /// True when the tangential force was at the Coulomb limit this step.
+    pub sliding: bool,
+}
+
+impl<F: Float> ContactForces<F> {
+    /// Total contact force on body j.
+    #[inline(always)]
+    pub fn force_on_j(&self) -> Vec3<F> {
+        self.normal * self.normal_force + self.tangential_force
+    }
+
+    /// Total contact force on body i (exactly the negative of [`ContactForces::force_on_j`]).
+    #[inline(always)]
+    pub fn force_on_i(&self) -> Vec3<F> {
+        -self.force_on_j()
+    }
+
+    fn is_finite(&self) -> bool {
+        let (t, a, b) = (self.tangential_force, self.torque_on_i, self.torque_on_j);
+        all_finite([
+            self.normal_force,
+            t.x,
+            t.y,
+            t.z,
+            a.x,
+            a.y,
+            a.z,
+            b.x,
+            b.y,
+            b.z,
+        ])
+    }
+}
+
+/// The outcome of evaluating a pair.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Interaction<F> {
+    /// The bodies do not overlap. Their per-contact state has been reset for the next contact.
+    Apart,
+    /// The bodies overlap and push on each other.
+    Touching(ContactForces<F>),
+}
+
+impl<F> Interaction<F> {
+    /// The forces, when touching.
+    pub fn forces(&self) -> Option<&ContactForces<F>> {
+        match self {
+            Self::Apart => None,
+            Self::Touching(forces) => Some(forces),
+        }
+    }
+}
+
+impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
+    /// A law from its normal and tangential slots, with the libm backend, rotating spheres and
+    /// the radius as lever arm.
+    pub fn new(normal: N, tangential: T) -> Self {
+        Self {
+            normal,
+            tangential,
+            lever_arm: LeverArm::Radius,
+            slots: PhantomData,
+        }
+    }
+}
+
+impl<F, N, T, M, R> ContactLaw<F, N, T, M, R>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    /// The same law computing its per-contact math with backend `B`.
+    pub fn with_backend<B: MathBackend<F>>(self) -> ContactLaw<F, N, T, B, R> {
+        ContactLaw {
+            normal: self.normal,
+            tangential: self.tangential,
+            lever_arm: self.lever_arm,
+            slots: PhantomData,
+        }
+    }
+
+    /// The same law for spheres that do not rotate.
+    pub fn without_rotation(self) -> ContactLaw<F, N, T, M, NonRotating> {
+        ContactLaw {
+            normal: self.normal,
+            tangential: self.tangential,
+            lever_arm: self.lever_arm,
+            slots: PhantomData,
+        }
+    }
+
+    /// The same law with a different lever arm (see [`LeverArm`]).
+    pub fn with_lever_arm(mut self, lever_arm: LeverArm) -> Self {
+        self.lever_arm = lever_arm;
+        self
+    }
+
+    /// The normal slot.
+    pub fn normal(&self) -> &N {
+        &self.normal
+    }
+
+    /// The tangential slot.
+    pub fn tangential(&self) -> &T {
+        &self.tangential
+    }
+
+    /// The lever arm in use.
+    pub fn lever_arm(&self) -> LeverArm {
+        self.lever_arm
+    }
+
+    /// The normal oscillator of a contact with this effective mass (reference backend).
+    pub fn oscillator(&self, effective_mass: F) -> NormalOscillator<F> {
+        self.normal.oscillator::<F::DefaultBackend>(effective_mass)
+    }
+
+    /// Duration of a binary impact with this effective mass (s); see
+    /// [`NormalModel::contact_duration`].
+    pub fn contact_duration(&self, effective_mass: F) -> F {
+        self.normal.contact_duration(effective_mass)
+    }
+
+    /// The largest stable time step for contacts with this effective mass: the smaller of the
+    /// normal and the tangential mode's bound. The tangential effective mass is `2/7 m*` for
+    /// rotating homogeneous solid spheres (conservative for any sphere with `I >= 2/5 m R^2`) and
+    /// `m*` without rotation.
+    pub fn critical_time_step(&self, effective_mass: F) -> F {
+        let tangential_mass = if R::ROTATES {
+            F::from_f64(2.0 / 7.0) * effective_mass
+        } else {
+            effective_mass
+        };
+        let oscillator = self.oscillator(effective_mass);
+        let tangential = self
+            .tangential
+            .critical_time_step(&oscillator, tangential_mass);
+        self.normal
+            .critical_time_step(effective_mass)
+            .min_of(tangential)
+    }
+
+    /// A step of 1/50 of the contact duration (MFiX's default). When the duration is infinite
+    /// (critical damping, no clamp), 1/50 of the undamped half-period `pi / w0` instead.
+    pub fn recommended_time_step(&self, effective_mass: F) -> F {
+        let duration = self.contact_duration(effective_mass);
+        let duration = if duration.is_finite() {
+            duration
+        } else {
+            F::PI / self.oscillator(effective_mass).natural_frequency
+        };
+        duration / F::from_f64(50.0)
+    }
+
+    /// Checks a time step for a scene whose lightest contact has effective mass
+    /// `smallest_effective_mass` (for equal spheres of mass m: m/2 between spheres, m against a
+    /// wall).
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] / [`ParameterError::NotPositive`] for the step or the mass;
+    /// [`ParameterError::TimeStepUnstable`] when the step is at or past
+    /// [`ContactLaw::critical_time_step`].
+    pub fn time_step(
+        &self,
+        seconds: F,
+        smallest_effective_mass: F,
+    ) -> Result<TimeStep<F>, ParameterError> {
+        let seconds = positive(seconds, Parameter::TimeStep)?;
+        let mass = positive(smallest_effective_mass, Parameter::Mass)?;
+        let limit = self.critical_time_step(mass);
+        if seconds < limit {
+            Ok(TimeStep::checked(seconds))
+        } else {
+            Err(ParameterError::TimeStepUnstable {
+                time_step: seconds.to_f64(),
+                limit: limit.to_f64(),
+            })
+        }
+    }
+
+    /// Evaluates the contact between spheres `i` and `j` for one step.
+    ///
+    /// `state` is this pair's per-contact state, owned by the caller and passed in the same (i, j)
+    /// order every step. On success it is advanced; when the spheres are apart it is reset; on
+    /// error it is left exactly as it was.
+    ///
+    /// # Errors
+    /// [`ContactError::NonFiniteInput`], [`ContactError::NonPositiveRadius`],
+    /// [`ContactError::NonPositiveMass`], [`ContactError::CoincidentCentres`] for bad inputs;
+    /// [`ContactError::NonFiniteResult`] when finite inputs overflow.
+    #[inline]
+    pub fn sphere_sphere(
+        &self,
+        i: &Sphere<F>,
+        j: &Sphere<F>,
+        state: &mut T::State,
+        time_step: TimeStep<F>,
+    ) -> Result<Interaction<F>, ContactError> {
+        let frame = geometry::sphere_sphere::<F, M>(i, j, self.lever_arm)?;
+        self.resolve(frame, state, time_step)
+    }
+
+    /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step. State
+    /// handling and errors as for [`ContactLaw::sphere_sphere`] (a wall cannot coincide).
+    ///
+    /// # Errors
+    /// As [`ContactLaw::sphere_sphere`], without [`ContactError::CoincidentCentres`].
+    #[inline]
+    pub fn sphere_wall(
+        &self,
+        sphere: &Sphere<F>,
+        wall: &Wall<F>,
+        state: &mut T::State,
+        time_step: TimeStep<F>,
+    ) -> Result<Interaction<F>, ContactError> {
+        let frame = geometry::sphere_wall(sphere, wall, self.lever_arm)?;
+        self.resolve(frame, state, time_step)
+    }
+
+    #[inline(always)]
+    fn resolve(
+        &self,
+        frame: Option<ContactFrame<F>>,
+        state: &mut T::State,
+        time_step: TimeStep<F>,
+    ) -> Result<Interaction<F>, ContactError> {
+        let Some(frame) = frame else {
+            *state = T::State::default();
+            return Ok(Interaction::Apart);
+        };
+        let n = frame.normal;
+        let normal_velocity = frame.velocity.dot(n);
+        let oscillator = self.normal.oscillator::<M>(frame.effective_mass);
+        let normal_force = self
+            .normal
+            .force(frame.overlap, normal_velocity, &oscillator);
+
+        let mut forces = ContactForces {
+            normal: n,
+            overlap: frame.overlap,
+            normal_force,
+            tangential_force: Vec3::ZERO,
+            torque_on_i: Vec3::ZERO,
+            torque_on_j: Vec3::ZERO,
+            sliding: false,
+        };
+        let mut next_state = *state;
+        if T::ACTIVE {
+            let mut slip_velocity = frame.velocity - n * normal_velocity;
+            if R::ROTATES {
+                let spin =
+                    frame.angular_velocity_i * frame.arm_i + frame.angular_velocity_j * frame.arm_j;
+                slip_velocity -= spin.cross(n);
+            }
+            let input = TangentialInput {
+                normal: n,
+                slip_velocity,
+                normal_force,
+                overlap: frame.overlap,
+                approach_rate: -normal_velocity,
+                oscillator,
+                time_step: time_step.seconds(),
+            };
+            let output = self.tangential.force::<M>(state, &input);
+            forces.tangential_force = output.force;
+            forces.sliding = output.sliding;
+            next_state = output.state;
+            if R::ROTATES {
+                let moment = n.cross(output.force);
+                forces.torque_on_i = moment * -frame.arm_i;
+                forces.torque_on_j = moment * -frame.arm_j;
+            }
+        }
+        if !(forces.is_finite() && next_state.is_finite()) {
+            return Err(ContactError::NonFiniteResult);
+        }
+        *state = next_state;
+        Ok(Interaction::Touching(forces))
+    }
+}

@@ -1,0 +1,176 @@
+//! The normal slot: how the overlap and approach rate become a normal force.
+
+use crate::backend::MathBackend;
+use crate::error::{Parameter, ParameterError, positive};
+use crate::float::Float;
+
+/// The linear normal oscillator of one contact (effective mass `m*`, stiffness `k_n`, dashpot
+/// `eta_n`): everything the normal and tangential laws derive from the mass of the pair.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NormalOscillator<F> {
+    /// Undamped angular frequency `w0 = sqrt(k_n / m*)` (rad/s).
+    pub natural_frequency: F,
+    /// Normal dashpot coefficient `eta_n` (N s/m).
+    pub damping_coefficient: F,
+    /// Decay rate `beta = eta_n / (2 m*)` (1/s).
+    pub decay_rate: F,
+    /// Damped angular frequency `wd = sqrt(w0^2 - beta^2)` (rad/s); zero at critical damping.
+    pub damped_frequency: F,
+}
+
+impl<F: Float> NormalOscillator<F> {
+    /// Damping ratio `beta / w0`.
+    pub fn damping_ratio(&self) -> F {
+        self.decay_rate / self.natural_frequency
+    }
+}
+
+/// A normal force law: the first slot of a [`ContactLaw`](crate::ContactLaw).
+pub trait NormalModel<F: Float>: Copy + core::fmt::Debug {
+    /// The oscillator of a contact with effective mass `effective_mass`, computed with backend `M`.
+    fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F>;
+
+    /// Normal force on body `j` along the unit normal (positive pushes the bodies apart), from the
+    /// overlap `delta > 0` and the normal relative velocity `v_n` (negative while approaching).
+    fn force(&self, overlap: F, normal_velocity: F, oscillator: &NormalOscillator<F>) -> F;
+
+    /// How long a binary impact carries normal force (s): from first touch until the force ends.
+    /// Infinite when it never ends (critical damping without the attraction clamp).
+    fn contact_duration(&self, effective_mass: F) -> F;
+
+    /// Largest time step for which explicit (symplectic Euler, leapfrog, velocity Verlet)
+    /// integration of this law's oscillator is stable.
+    fn critical_time_step(&self, effective_mass: F) -> F;
+}
+
+/// Linear spring and dashpot: `F_n = k_n delta - eta_n v_n`, with `eta_n` from a coefficient of
+/// restitution so that a free binary impact rebounds with exactly `e` times its approach speed.
+///
+/// `eta_n = 2 zeta sqrt(m* k_n)`, `zeta = |ln e| / sqrt(pi^2 + ln^2 e)` (`zeta = 1` at `e = 0`).
+/// Near the end of contact the dashpot pulls (the force turns attractive). By default that pull is
+/// kept, which makes the rebound ratio exactly `e`; [`LinearSpringDashpot::with_attraction_clamped`]
+/// clips the force at zero instead (LIGGGHTS' `limitForce`), which raises the effective restitution
+/// (0.5 becomes 0.5503, 0.9 becomes 0.9020; Schwager & Poeschel 2007).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LinearSpringDashpot<F> {
+    stiffness: F,
+    restitution: F,
+    damping_ratio: F,
+    // sqrt(1 - zeta^2) = pi / sqrt(pi^2 + ln^2 e), kept so wd = w0 * this needs no second sqrt.
+    damped_frequency_ratio: F,
+    clamp_attraction: bool,
+}
+
+impl<F: Float> LinearSpringDashpot<F> {
+    /// A spring of stiffness `k_n` (N/m) with damping from restitution `e` in `[0, 1]`.
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] or [`ParameterError::NotPositive`] for the stiffness;
+    /// [`ParameterError::NonFinite`] for a NaN or infinite `e`;
+    /// [`ParameterError::RestitutionOutOfRange`] for `e` outside `[0, 1]`.
+    pub fn new(stiffness: F, restitution: F) -> Result<Self, ParameterError> {
+        let stiffness = positive(stiffness, Parameter::NormalStiffness)?;
+        if !restitution.is_finite() {
+            return Err(ParameterError::NonFinite(Parameter::Restitution));
+        }
+        if !(restitution >= F::ZERO && restitution <= F::ONE) {
+            return Err(ParameterError::RestitutionOutOfRange);
+        }
+        let (damping_ratio, damped_frequency_ratio) = if restitution == F::ZERO {
+            (F::ONE, F::ZERO)
+        } else {
+            let log_e = F::DefaultBackend::ln(restitution);
+            let root = F::DefaultBackend::sqrt(F::PI * F::PI + log_e * log_e);
+            (log_e.abs() / root, F::PI / root)
+        };
+        Ok(Self {
+            stiffness,
+            restitution,
+            damping_ratio,
+            damped_frequency_ratio,
+            clamp_attraction: false,
+        })
+    }
+
+    /// The same law with the normal force clipped at zero (never attractive).
+    pub fn with_attraction_clamped(mut self) -> Self {
+        self.clamp_attraction = true;
+        self
+    }
+
+    /// Normal stiffness `k_n` (N/m).
+    pub fn stiffness(&self) -> F {
+        self.stiffness
+    }
+
+    /// The coefficient of restitution the damping was derived from.
+    pub fn restitution(&self) -> F {
+        self.restitution
+    }
+
+    /// Damping ratio `zeta` (0 undamped, 1 critical).
+    pub fn damping_ratio(&self) -> F {
+        self.damping_ratio
+    }
+
+    /// Whether attractive normal forces are clipped to zero.
+    pub fn clamps_attraction(&self) -> bool {
+        self.clamp_attraction
+    }
+}
+
+impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
+    #[inline(always)]
+    fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F> {
+        let natural_frequency = M::sqrt(self.stiffness / effective_mass);
+        let decay_rate = self.damping_ratio * natural_frequency;
+        NormalOscillator {
+            natural_frequency,
+            damping_coefficient: F::TWO * effective_mass * decay_rate,
+            decay_rate,
+            damped_frequency: self.damped_frequency_ratio * natural_frequency,
+        }
+    }
+
+    #[inline(always)]
+    fn force(&self, overlap: F, normal_velocity: F, oscillator: &NormalOscillator<F>) -> F {
+        let force = self.stiffness * overlap - oscillator.damping_coefficient * normal_velocity;
+        if self.clamp_attraction {
+            force.max_of(F::ZERO)
+        } else {
+            force
+        }
+    }
+
+    fn contact_duration(&self, effective_mass: F) -> F {
+        let o = self.oscillator::<F::DefaultBackend>(effective_mass);
+        let (wd, beta) = (o.damped_frequency, o.decay_rate);
+        if !self.clamp_attraction {
+            // Free contact ends when the overlap returns to zero: half a damped period.
+            return if wd > F::ZERO {
+                F::PI / wd
+            } else {
+                F::INFINITY
+            };
+        }
+        // Clamped contact ends when k delta + eta delta' = 0, at wd t = 2 atan(wd / beta).
+        if wd > F::ZERO {
+            F::TWO * F::DefaultBackend::atan2(wd, beta) / wd
+        } else {
+            F::TWO / beta
+        }
+    }
+
+    fn critical_time_step(&self, effective_mass: F) -> F {
+        let o = self.oscillator::<F::DefaultBackend>(effective_mass);
+        damped_critical_step(o.natural_frequency, self.damping_ratio)
+    }
+}
+
+/// Stability bound of explicit integration for a damped linear oscillator of frequency `w` and
+/// damping ratio `zeta`: `dt < (2 / w) (sqrt(1 + zeta^2) - zeta)` (symplectic Euler and central
+/// differences share it; it reduces to `2 / w` without damping).
+pub(crate) fn damped_critical_step<F: Float>(frequency: F, damping_ratio: F) -> F {
+    let root = F::DefaultBackend::sqrt(F::ONE + damping_ratio * damping_ratio);
+    F::TWO / frequency * (root - damping_ratio)
+}

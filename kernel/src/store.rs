@@ -1,0 +1,133 @@
+//! A fixed-capacity contact-history store, for callers that do not keep per-contact state next to
+//! their own pair lists.
+
+use heapless::index_map::FnvIndexMap;
+
+use crate::error::ContactError;
+use crate::law::Interaction;
+use crate::tangential::ContactState;
+
+/// Identifies one contact: the caller's indices of body i and body j, in the order the contact is
+/// evaluated (the stored spring is j relative to i, so `(3, 7)` and `(7, 3)` are different
+/// contacts; use one order, e.g. the lower index first). For walls, give each wall an index that
+/// no particle uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ContactKey {
+    /// Index of body i.
+    pub i: u32,
+    /// Index of body j.
+    pub j: u32,
+}
+
+impl ContactKey {
+    /// The key of the contact between bodies `i` and `j`, in that order.
+    pub const fn new(i: u32, j: u32) -> Self {
+        Self { i, j }
+    }
+}
+
+/// Per-contact states for up to `N` simultaneous contacts, with no heap: an open-addressing map
+/// with a fixed FNV hash, so its behaviour is the same on every run. `N` must be a power of two
+/// greater than one (checked at compile time).
+///
+/// [`ContactHistory::evaluate`] inserts a state on first touch, updates it while touching and
+/// drops it when the contact ends. A new contact that finds the store full gets
+/// [`ContactError::HistoryFull`], and nothing already stored is changed.
+#[derive(Clone, Debug)]
+pub struct ContactHistory<S, const N: usize> {
+    states: FnvIndexMap<ContactKey, S, N>,
+}
+
+impl<S: ContactState, const N: usize> Default for ContactHistory<S, N> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<S: ContactState, const N: usize> ContactHistory<S, N> {
+    /// An empty store.
+    pub const fn new() -> Self {
+        Self {
+            states: FnvIndexMap::new(),
+        }
+    }
+
+    /// How many contacts are stored.
+    pub fn len(&self) -> usize {
+        self.states.len()
+    }
+
+    /// True when no contact is stored.
+    pub fn is_empty(&self) -> bool {
+        self.states.is_empty()
+    }
+
+    /// True when no new contact fits.
+    pub fn is_full(&self) -> bool {
+        self.states.len() == N
+    }
+
+    /// The capacity `N`.
+    pub const fn capacity(&self) -> usize {
+        N
+    }
+
+    /// The stored state of a contact.
+    pub fn get(&self, key: ContactKey) -> Option<&S> {
+        self.states.get(&key)
+    }
+
+    /// Removes a contact (for example one whose pair left the caller's neighbour list) and
+    /// returns its state.
+    pub fn remove(&mut self, key: ContactKey) -> Option<S> {
+        self.states.swap_remove(&key)
+    }
+
+    /// Keeps only the contacts for which `keep` returns true.
+    pub fn retain(&mut self, mut keep: impl FnMut(ContactKey, &S) -> bool) {
+        self.states.retain(|key, state| keep(*key, state));
+    }
+
+    /// Removes every contact.
+    pub fn clear(&mut self) {
+        self.states.clear();
+    }
+
+    /// The stored contacts, in the store's internal order.
+    pub fn iter(&self) -> impl Iterator<Item = (ContactKey, &S)> {
+        self.states.iter().map(|(key, state)| (*key, state))
+    }
+
+    /// Evaluates one contact with its stored state. `step` is a call of
+    /// [`ContactLaw::sphere_sphere`](crate::ContactLaw::sphere_sphere) or
+    /// [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall) on the state it is given.
+    ///
+    /// A stored contact is updated when still touching and removed when apart. An unknown contact
+    /// starts from the default (relaxed) state and is stored only if it touches.
+    ///
+    /// # Errors
+    /// Whatever `step` returns (the store is then unchanged), and [`ContactError::HistoryFull`]
+    /// when a new touching contact does not fit (the store is then unchanged and the forces of
+    /// that step are not returned: the caller decides whether to drop the contact or grow `N`).
+    pub fn evaluate<F>(
+        &mut self,
+        key: ContactKey,
+        step: impl FnOnce(&mut S) -> Result<Interaction<F>, ContactError>,
+    ) -> Result<Interaction<F>, ContactError> {
+        if let Some(state) = self.states.get_mut(&key) {
+            let interaction = step(state)?;
+            if let Interaction::Apart = interaction {
+                self.states.swap_remove(&key);
+            }
+            return Ok(interaction);
+        }
+        let mut state = S::default();
+        let interaction = step(&mut state)?;
+        if let Interaction::Touching(_) = interaction {
+            self.states
+                .insert(key, state)
+                .map_err(|_| ContactError::HistoryFull)?;
+        }
+        Ok(interaction)
+    }
+}

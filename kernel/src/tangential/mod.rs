@@ -1,0 +1,198 @@
+//! The tangential slot: spring, dashpot and Coulomb slider, in the implementations the talk
+//! compares. They differ only in what happens when the contact slides:
+//!
+//! | slot | displacement used in the trial force | sliding force | displacement kept |
+//! |---|---|---|---|
+//! | [`Frictionless`] | none (no tangential work at all) | none | none |
+//! | [`Stateless`] | `v_t t_e`, `t_e` the elapsed contact time from the normal oscillator | along the trial force | none |
+//! | [`ModelC`] | `v_t dt` (this step only) | against the slip | none |
+//! | [`ModelA`] (Cundall & Strack) | stored | along the trial force | grows without bound |
+//! | [`ModelB`] (Tsuji et al.) | stored | against the slip | grows without bound |
+//! | [`ModelAA`] (the talk's proper implementation) | stored | along the trial force | limited to `mu |F_n| / k_t` |
+//!
+//! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = (eta_t/eta_n) eta_n`; the contact sticks
+//! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
+//! square root; within the backend's square-root error otherwise).
+
+mod frictionless;
+mod history;
+mod model_c;
+mod stateless;
+
+pub use frictionless::Frictionless;
+pub use history::{ModelA, ModelAA, ModelB, SpringDisplacement};
+pub use model_c::ModelC;
+pub use stateless::Stateless;
+
+use crate::backend::MathBackend;
+use crate::error::{Parameter, ParameterError, non_negative, positive};
+use crate::float::Float;
+use crate::normal::NormalOscillator;
+use crate::vector::Vec3;
+
+/// Per-contact state a tangential slot keeps between steps. `()` for slots that keep none.
+pub trait ContactState: Copy + core::fmt::Debug + Default + PartialEq {
+    /// True when every stored number is finite.
+    fn is_finite(&self) -> bool;
+}
+
+impl ContactState for () {
+    #[inline(always)]
+    fn is_finite(&self) -> bool {
+        true
+    }
+}
+
+/// What a tangential slot sees of one contact at one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TangentialInput<F> {
+    /// Unit normal from body i to body j.
+    pub normal: Vec3<F>,
+    /// Slip velocity of the contact point, j relative to i, in the tangent plane.
+    pub slip_velocity: Vec3<F>,
+    /// Normal force on j along the normal (positive repulsive); the Coulomb limit is `mu` times its
+    /// magnitude.
+    pub normal_force: F,
+    /// Overlap `delta > 0`.
+    pub overlap: F,
+    /// Rate of change of the overlap, `-v_n` (positive while approaching).
+    pub approach_rate: F,
+    /// The contact's normal oscillator (gives `eta_n`, and the elapsed-time estimate).
+    pub oscillator: NormalOscillator<F>,
+    /// The time step.
+    pub time_step: F,
+}
+
+/// What a tangential slot returns for one step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TangentialOutput<F, S> {
+    /// Tangential force on body j (the force on i is its negative).
+    pub force: Vec3<F>,
+    /// The state to keep for the next step (committed only if the whole evaluation succeeds).
+    pub state: S,
+    /// True when the contact slid this step (the Coulomb limit was active).
+    pub sliding: bool,
+}
+
+/// A tangential force law: the second slot of a [`ContactLaw`](crate::ContactLaw).
+pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug {
+    /// Per-contact state (`()` when the law stores nothing).
+    type State: ContactState;
+
+    /// False only for [`Frictionless`]: the law then skips the slip velocity, the tangential force
+    /// and the torques at compile time.
+    const ACTIVE: bool = true;
+
+    /// Tangential force for this step, and the state to keep.
+    fn force<M: MathBackend<F>>(
+        &self,
+        state: &Self::State,
+        contact: &TangentialInput<F>,
+    ) -> TangentialOutput<F, Self::State>;
+
+    /// Largest stable explicit time step of the tangential mode, for a contact with the given normal
+    /// oscillator and tangential effective mass (`2/7 m*` for rotating solid spheres, `m*` without
+    /// rotation). Infinite when the law adds no stiffness or damping.
+    fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F;
+}
+
+/// Stiffness, damping and friction shared by every frictional slot.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TangentialParameters<F> {
+    stiffness: F,
+    damping_ratio: F,
+    friction: F,
+}
+
+impl<F: Float> TangentialParameters<F> {
+    /// Tangential stiffness `k_t` (N/m), the ratio `eta_t / eta_n` of tangential to normal damping
+    /// (MFiX uses 1/2; 0 removes the tangential dashpot) and the Coulomb coefficient `mu`.
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] for any non-finite value, [`ParameterError::NotPositive`]
+    /// for `k_t <= 0`, [`ParameterError::Negative`] for a negative damping ratio or `mu`.
+    pub fn new(stiffness: F, damping_ratio: F, friction: F) -> Result<Self, ParameterError> {
+        Ok(Self {
+            stiffness: positive(stiffness, Parameter::TangentialStiffness)?,
+            damping_ratio: non_negative(damping_ratio, Parameter::TangentialDampingRatio)?,
+            friction: non_negative(friction, Parameter::Friction)?,
+        })
+    }
+
+    /// Tangential stiffness `k_t` (N/m).
+    pub fn stiffness(&self) -> F {
+        self.stiffness
+    }
+
+    /// `eta_t / eta_n`.
+    pub fn damping_ratio(&self) -> F {
+        self.damping_ratio
+    }
+
+    /// Coulomb friction coefficient `mu`.
+    pub fn friction(&self) -> F {
+        self.friction
+    }
+
+    /// `eta_t` for a contact with normal dashpot `eta_n`.
+    #[inline(always)]
+    pub(crate) fn dashpot(&self, oscillator: &NormalOscillator<F>) -> F {
+        self.damping_ratio * oscillator.damping_coefficient
+    }
+
+    /// The Coulomb limit `mu |F_n|`.
+    #[inline(always)]
+    pub(crate) fn limit(&self, contact: &TangentialInput<F>) -> F {
+        self.friction * contact.normal_force.abs()
+    }
+
+    /// Trial force `-k_t xi - eta_t v_t`.
+    #[inline(always)]
+    pub(crate) fn trial_force(
+        &self,
+        displacement: Vec3<F>,
+        contact: &TangentialInput<F>,
+    ) -> Vec3<F> {
+        -(displacement * self.stiffness) - contact.slip_velocity * self.dashpot(&contact.oscillator)
+    }
+
+    /// Stability bound of a tangential spring with this stiffness and dashpot.
+    pub(crate) fn spring_critical_step(&self, oscillator: &NormalOscillator<F>, mass: F) -> F {
+        let frequency = F::DefaultBackend::sqrt(self.stiffness / mass);
+        let damping_ratio = self.dashpot(oscillator) / (F::TWO * mass * frequency);
+        crate::normal::damped_critical_step(frequency, damping_ratio)
+    }
+}
+
+/// Which way a sliding contact's force points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Slide {
+    /// Along the trial force (Cundall & Strack; Model AA; the stateless law).
+    AlongTrial,
+    /// Against the slip velocity (Tsuji et al.; Model C). Falls back to the trial force's direction
+    /// when there is no slip, so the force stays bounded.
+    AgainstSlip,
+}
+
+/// The Coulomb slider: the trial force if it is within `limit`, else a force of magnitude `limit`
+/// in the direction `slide` says. Returns the force and whether the contact slid.
+#[inline(always)]
+pub(crate) fn coulomb<F: Float, M: MathBackend<F>>(
+    trial: Vec3<F>,
+    slip: Vec3<F>,
+    limit: F,
+    slide: Slide,
+) -> (Vec3<F>, bool) {
+    let trial_squared = trial.norm_squared();
+    if trial_squared <= limit * limit {
+        return (trial, false);
+    }
+    let direction = match slide {
+        Slide::AgainstSlip if slip.norm_squared() >= F::MIN_POSITIVE => -slip,
+        _ => trial,
+    };
+    (
+        direction * (limit * M::inv_sqrt(direction.norm_squared())),
+        true,
+    )
+}

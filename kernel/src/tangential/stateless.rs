@@ -1,0 +1,90 @@
+//! The simplified ("stateless") law of REFERENCE 3.1: Model AA's slider with the tangential
+//! displacement estimated from the contact's elapsed time instead of stored.
+
+use super::{
+    Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters, coulomb,
+};
+use crate::backend::MathBackend;
+use crate::float::Float;
+use crate::normal::NormalOscillator;
+
+/// The stateless law: `xi = v_t t_e`, then Model AA's limit and sliding rule. Stores nothing.
+///
+/// The elapsed time comes from the linear normal oscillator, whose overlap is
+/// `delta = (v0 / wd) exp(-beta t) sin(wd t)` in a binary impact, so that
+/// `t_e = atan2(wd delta, delta' + beta delta) / wd`, in `[0, pi / wd]`. At critical damping
+/// (`wd = 0`) the limit `delta / (delta' + beta delta)` is used, bounded by `pi / beta`.
+///
+/// It reproduces rigid-body theory (tangential restitution 5/7 below the gross-sliding threshold,
+/// the closed form above it, rolling at 5/7 of the initial speed on a plate). Like every stateless
+/// law it has no static friction at zero slip: it cannot hold a sphere at rest on a slope, and it
+/// cannot show the elastic recoil of a stored spring. For persistent contacts (not binary impacts)
+/// `t_e` is only a bounded estimate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stateless<F>(pub TangentialParameters<F>);
+
+/// Estimated time since first touch of a binary impact, from the overlap and its rate.
+#[inline(always)]
+pub fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
+    overlap: F,
+    approach_rate: F,
+    oscillator: &NormalOscillator<F>,
+) -> F {
+    let (wd, beta) = (oscillator.damped_frequency, oscillator.decay_rate);
+    let cosine_part = approach_rate + beta * overlap;
+    if wd > F::ZERO {
+        // Clamp guards approximate atan2 backends that stray outside [0, pi].
+        let phase = M::atan2(wd * overlap, cosine_part)
+            .max_of(F::ZERO)
+            .min_of(F::PI);
+        phase / wd
+    } else {
+        let bound = F::PI / beta;
+        if cosine_part > F::ZERO {
+            (overlap / cosine_part).min_of(bound)
+        } else {
+            bound
+        }
+    }
+}
+
+impl<F: Float> TangentialModel<F> for Stateless<F> {
+    type State = ();
+
+    #[inline(always)]
+    fn force<M: MathBackend<F>>(
+        &self,
+        _: &(),
+        contact: &TangentialInput<F>,
+    ) -> TangentialOutput<F, ()> {
+        let elapsed = elapsed_contact_time::<F, M>(
+            contact.overlap,
+            contact.approach_rate,
+            &contact.oscillator,
+        );
+        let trial = self.0.trial_force(contact.slip_velocity * elapsed, contact);
+        let (force, sliding) = coulomb::<F, M>(
+            trial,
+            contact.slip_velocity,
+            self.0.limit(contact),
+            Slide::AlongTrial,
+        );
+        TangentialOutput {
+            force,
+            state: (),
+            sliding,
+        }
+    }
+
+    /// While sticking the law is a dashpot of strength `k_t t_e + eta_t`, with `t_e` at most
+    /// `pi / wd`: the explicit update of the slip stays stable below `2 m_t / (k_t pi / wd + eta_t)`.
+    fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
+        let longest = if oscillator.damped_frequency > F::ZERO {
+            F::PI / oscillator.damped_frequency
+        } else {
+            F::PI / oscillator.decay_rate
+        };
+        let dashpot = self.0.stiffness() * longest + self.0.dashpot(oscillator);
+        F::TWO * tangential_mass / dashpot
+    }
+}
