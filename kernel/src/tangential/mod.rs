@@ -20,9 +20,9 @@ mod model_c;
 mod stateless;
 
 pub use frictionless::Frictionless;
-pub use history::{ModelA, ModelAA, ModelB, SpringDisplacement};
+pub use history::{ModelA, ModelAA, ModelB, SpringDisplacement, rotate_into_tangent_plane};
 pub use model_c::ModelC;
-pub use stateless::Stateless;
+pub use stateless::{Stateless, elapsed_contact_time};
 
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError, non_negative, positive};
