@@ -505,3 +505,52 @@ fn frictionless_and_non_rotating_slots_do_no_tangential_work() {
     );
     assert_eq!(without_spin.forces().unwrap().tangential_force, Vec3::ZERO);
 }
+
+#[test]
+fn an_isolated_pair_keeps_its_momentum() {
+    // Linear momentum is conserved by action = reaction. Angular momentum about the origin changes
+    // at the rate (d - a_i - a_j) n x F_t: zero with the contact-plane arm (a_i + a_j = d), and
+    // -delta n x F_t with the radius arm, whose arms overlap by delta.
+    let normal = LinearSpringDashpot::new(2.0e4, 0.7).unwrap();
+    let tangential = ModelAA(parameters::<f64>(8.0e3, 0.5, 0.4));
+    let momenta = |a: &Sphere<f64>, b: &Sphere<f64>| {
+        let linear = a.velocity * a.mass + b.velocity * b.mass;
+        let angular = a.position.cross(a.velocity * a.mass)
+            + b.position.cross(b.velocity * b.mass)
+            + a.angular_velocity * a.solid_moment_of_inertia()
+            + b.angular_velocity * b.solid_moment_of_inertia();
+        (linear, angular)
+    };
+    for (lever_arm, conserves_spin) in [(LeverArm::ContactPlane, true), (LeverArm::Radius, false)] {
+        let law = ContactLaw::new(normal, tangential).with_lever_arm(lever_arm);
+        let mut i = Sphere::solid(Vec3::new(0.0, 0.0, 0.0), 1.0e-3, 2500.0);
+        let mut j = Sphere::solid(Vec3::new(2.2e-3, 0.4e-3, -0.2e-3), 1.3e-3, 1500.0);
+        i.velocity = Vec3::new(1.0, 0.3, 0.0);
+        j.velocity = Vec3::new(-0.6, 0.0, 0.2);
+        i.angular_velocity = Vec3::new(0.0, 300.0, -500.0);
+        j.angular_velocity = Vec3::new(800.0, 0.0, 100.0);
+        let m = effective_mass(i.mass, j.mass);
+        let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
+        let (p0, l0) = momenta(&i, &j);
+        let (a, b) = pair_collision(&law, i, j, dt, 100_000, |_, _, _| {}).unwrap();
+        let (p1, l1) = momenta(&a, &b);
+        let dp = (p1 - p0).norm_squared().sqrt() / p0.norm_squared().sqrt();
+        let dl = (l1 - l0).norm_squared().sqrt() / l0.norm_squared().sqrt();
+        println!("{lever_arm:?}: relative change of linear momentum {dp:.1e}, angular {dl:.1e}");
+        assert!(
+            dp < 1e-14,
+            "{lever_arm:?}: linear momentum changed by {dp:e}"
+        );
+        if conserves_spin {
+            assert!(
+                dl < 1e-12,
+                "{lever_arm:?}: angular momentum changed by {dl:e}"
+            );
+        } else {
+            assert!(
+                dl > 1e-6,
+                "{lever_arm:?}: the radius arm should not conserve it ({dl:e})"
+            );
+        }
+    }
+}
