@@ -266,44 +266,25 @@ fn the_contact_plane_arm_is_mfixs_arm() {
 #[test]
 fn the_talks_model_comparison_is_reproduced() {
     // REFERENCE 4.4, e = 0.98, k_t/k_n = 0.86, eta_t = 0.
+    fn rebound<T: TangentialModel<f64>>(tangential: T, angle: f64) -> (f64, f64) {
+        let r = oblique_rebound(
+            &kharaz::<f64, T>(tangential),
+            RADIUS,
+            DENSITY,
+            SPEED,
+            angle,
+            50.0,
+            |_| {},
+        );
+        (r.tangential_restitution, r.spin)
+    }
     let p = parameters::<f64>(860.0, 0.0, FRICTION);
-    let run = |law_e_t: &dyn Fn(f64) -> (f64, f64), angle: f64| law_e_t(angle);
-    let aa = |angle| {
-        let r = oblique_rebound(
-            &kharaz::<f64, _>(ModelAA(p)),
-            RADIUS,
-            DENSITY,
-            SPEED,
-            angle,
-            50.0,
-            |_| {},
-        );
-        (r.tangential_restitution, r.spin)
-    };
-    let a = |angle| {
-        let r = oblique_rebound(
-            &kharaz::<f64, _>(ModelA(p)),
-            RADIUS,
-            DENSITY,
-            SPEED,
-            angle,
-            50.0,
-            |_| {},
-        );
-        (r.tangential_restitution, r.spin)
-    };
-    let b = |angle| {
-        let r = oblique_rebound(
-            &kharaz::<f64, _>(ModelB(p)),
-            RADIUS,
-            DENSITY,
-            SPEED,
-            angle,
-            50.0,
-            |_| {},
-        );
-        (r.tangential_restitution, r.spin)
-    };
+    let (aa, a, b) = (
+        |angle| rebound(ModelAA(p), angle),
+        |angle| rebound(ModelA(p), angle),
+        |angle| rebound(ModelB(p), angle),
+    );
+    let run = |law: &dyn Fn(f64) -> (f64, f64), angle: f64| law(angle);
     // Model AA: about 0.594 at 15 deg, minimum about 0.59 near 17.5 deg (the elastic recoil dip).
     let (aa15, aa175, aa20) = (run(&aa, 15.0).0, run(&aa, 17.5).0, run(&aa, 20.0).0);
     assert!((aa15 - 0.594).abs() < 0.005, "AA(15) = {aa15}");

@@ -24,43 +24,31 @@ pub trait MathBackend<F>: Copy + Default + core::fmt::Debug + 'static {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Libm;
 
-impl MathBackend<f32> for Libm {
-    #[inline(always)]
-    fn sqrt(x: f32) -> f32 {
-        libm::sqrtf(x)
-    }
-    #[inline(always)]
-    fn inv_sqrt(x: f32) -> f32 {
-        1.0 / libm::sqrtf(x)
-    }
-    #[inline(always)]
-    fn atan2(y: f32, x: f32) -> f32 {
-        libm::atan2f(y, x)
-    }
-    #[inline(always)]
-    fn ln(x: f32) -> f32 {
-        libm::logf(x)
-    }
+macro_rules! impl_libm {
+    ($t:ty, $sqrt:ident, $atan2:ident, $ln:ident) => {
+        impl MathBackend<$t> for Libm {
+            #[inline(always)]
+            fn sqrt(x: $t) -> $t {
+                libm::$sqrt(x)
+            }
+            #[inline(always)]
+            fn inv_sqrt(x: $t) -> $t {
+                1.0 / libm::$sqrt(x)
+            }
+            #[inline(always)]
+            fn atan2(y: $t, x: $t) -> $t {
+                libm::$atan2(y, x)
+            }
+            #[inline(always)]
+            fn ln(x: $t) -> $t {
+                libm::$ln(x)
+            }
+        }
+    };
 }
 
-impl MathBackend<f64> for Libm {
-    #[inline(always)]
-    fn sqrt(x: f64) -> f64 {
-        libm::sqrt(x)
-    }
-    #[inline(always)]
-    fn inv_sqrt(x: f64) -> f64 {
-        1.0 / libm::sqrt(x)
-    }
-    #[inline(always)]
-    fn atan2(y: f64, x: f64) -> f64 {
-        libm::atan2(y, x)
-    }
-    #[inline(always)]
-    fn ln(x: f64) -> f64 {
-        libm::log(x)
-    }
-}
+impl_libm!(f32, sqrtf, atan2f, logf);
+impl_libm!(f64, sqrt, atan2, log);
 
 /// The `micromath` crate's approximations, used as they are (no refinement step), `f32` only.
 ///

@@ -71,13 +71,14 @@ pub trait Float:
     /// The IEEE-754 bit pattern widened to `u64`, for bit-exact comparisons.
     fn to_bits_u64(self) -> u64;
 
-    /// The larger of two numbers; `other` when either is NaN is not guaranteed, callers validate first.
+    /// The larger of two numbers. With a NaN operand the comparison fails and `other` is returned;
+    /// the kernel only calls it on validated numbers.
     #[inline(always)]
     fn max_of(self, other: Self) -> Self {
         if self >= other { self } else { other }
     }
 
-    /// The smaller of two numbers; see [`Float::max_of`] for NaN.
+    /// The smaller of two numbers; NaN handling as for [`Float::max_of`].
     #[inline(always)]
     fn min_of(self, other: Self) -> Self {
         if self <= other { self } else { other }

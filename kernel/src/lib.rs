@@ -72,7 +72,18 @@
 //! - **Action and reaction.** Swapping i and j negates the force bit for bit and swaps the
 //!   torques. (`host-tests/tests/tangential.rs`)
 //! - **Determinism.** Pure functions of their inputs: no global state, no fused multiply-add, no
-//!   platform math; the same inputs give the same bits. (`host-tests/tests/tangential.rs`)
+//!   platform math; the same inputs give the same bits, whichever order a history store was filled
+//!   in. (`host-tests/tests/history_store.rs`)
+//! - **Stability limit.** [`ContactLaw::time_step`] refuses a step at or past the smaller of the
+//!   normal and tangential modes' explicit-integration limits, `dt < (2/w)(sqrt(1 + z^2) - z)`;
+//!   just below it a resting contact stays bounded, just above it it diverges.
+//!   (`host-tests/tests/stability.rs`)
+//! - **Pay for what you use.** [`Frictionless`], [`NonRotating`] and [`Rotating`] are zero-sized;
+//!   [`Stateless`], [`ModelC`] and [`Frictionless`] keep no per-contact state; the stored-spring
+//!   laws keep three floats. (`host-tests/tests/layout.rs`)
+//! - **Momentum.** Linear momentum of an isolated pair is conserved to rounding; angular momentum
+//!   too with [`LeverArm::ContactPlane`], while the default radius arm changes it at the rate
+//!   `-delta n x F_t`. (`host-tests/tests/tangential.rs`)
 //!
 //! ## Conventions
 //!

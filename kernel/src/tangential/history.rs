@@ -4,7 +4,6 @@
 
 use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
-    coulomb,
 };
 use crate::backend::MathBackend;
 use crate::float::Float;
@@ -55,11 +54,9 @@ fn stored_spring_step<F: Float, M: MathBackend<F>>(
 ) -> TangentialOutput<F, SpringDisplacement<F>> {
     let displacement = rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal)
         + contact.slip_velocity * contact.time_step;
-    let trial = parameters.trial_force(displacement, contact);
-    let limit = parameters.limit(contact);
-    let (force, sliding) = coulomb::<F, M>(trial, contact.slip_velocity, limit, slide);
+    let (force, sliding) = parameters.slide::<M>(displacement, contact, slide);
     let kept = if limited && sliding {
-        let longest = limit / parameters.stiffness();
+        let longest = parameters.limit(contact) / parameters.stiffness();
         let length_squared = displacement.norm_squared();
         if length_squared > longest * longest {
             displacement * (longest * M::inv_sqrt(length_squared))

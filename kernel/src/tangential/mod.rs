@@ -156,6 +156,20 @@ impl<F: Float> TangentialParameters<F> {
         -(displacement * self.stiffness) - contact.slip_velocity * self.dashpot(&contact.oscillator)
     }
 
+    /// The trial force for `displacement` put through the Coulomb slider: the step every
+    /// frictional law shares once it knows its displacement. Returns the force and whether the
+    /// contact slid.
+    #[inline(always)]
+    pub(crate) fn slide<M: MathBackend<F>>(
+        &self,
+        displacement: Vec3<F>,
+        contact: &TangentialInput<F>,
+        slide: Slide,
+    ) -> (Vec3<F>, bool) {
+        let trial = self.trial_force(displacement, contact);
+        coulomb::<F, M>(trial, contact.slip_velocity, self.limit(contact), slide)
+    }
+
     /// Stability bound of a tangential spring with this stiffness and dashpot.
     pub(crate) fn spring_critical_step(&self, oscillator: &NormalOscillator<F>, mass: F) -> F {
         let frequency = F::DefaultBackend::sqrt(self.stiffness / mass);

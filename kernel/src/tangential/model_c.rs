@@ -1,8 +1,6 @@
 //! Model C: the literal stateless reading of the spring-dashpot-slider.
 
-use super::{
-    Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters, coulomb,
-};
+use super::{Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters};
 use crate::backend::MathBackend;
 use crate::float::Float;
 use crate::normal::NormalOscillator;
@@ -25,13 +23,7 @@ impl<F: Float> TangentialModel<F> for ModelC<F> {
         contact: &TangentialInput<F>,
     ) -> TangentialOutput<F, ()> {
         let displacement = contact.slip_velocity * contact.time_step;
-        let trial = self.0.trial_force(displacement, contact);
-        let (force, sliding) = coulomb::<F, M>(
-            trial,
-            contact.slip_velocity,
-            self.0.limit(contact),
-            Slide::AgainstSlip,
-        );
+        let (force, sliding) = self.0.slide::<M>(displacement, contact, Slide::AgainstSlip);
         TangentialOutput {
             force,
             state: (),

@@ -1,9 +1,7 @@
 //! The simplified ("stateless") law of REFERENCE 3.1: Model AA's slider with the tangential
 //! displacement estimated from the contact's elapsed time instead of stored.
 
-use super::{
-    Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters, coulomb,
-};
+use super::{Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters};
 use crate::backend::MathBackend;
 use crate::float::Float;
 use crate::normal::NormalOscillator;
@@ -62,13 +60,8 @@ impl<F: Float> TangentialModel<F> for Stateless<F> {
             contact.approach_rate,
             &contact.oscillator,
         );
-        let trial = self.0.trial_force(contact.slip_velocity * elapsed, contact);
-        let (force, sliding) = coulomb::<F, M>(
-            trial,
-            contact.slip_velocity,
-            self.0.limit(contact),
-            Slide::AlongTrial,
-        );
+        let displacement = contact.slip_velocity * elapsed;
+        let (force, sliding) = self.0.slide::<M>(displacement, contact, Slide::AlongTrial);
         TangentialOutput {
             force,
             state: (),
