@@ -21,6 +21,29 @@ use crate::vector::Vec3;
 /// Build it with [`ContactLaw::new`] ([`Libm`](crate::Libm) backend, rotating spheres), then optionally
 /// [`with_backend`](ContactLaw::with_backend), [`without_rotation`](ContactLaw::without_rotation)
 /// and [`with_lever_arm`](ContactLaw::with_lever_arm).
+///
+/// ```
+/// use soft_sphere::{
+///     ContactLaw, Frictionless, Interaction, LinearSpringDashpot, Micromath, NonRotating, Sphere,
+///     Vec3, Wall,
+/// };
+///
+/// // A frictionless, non-rotating f32 law on the fast approximate backend: no slip velocity, no
+/// // tangential force, no torque and no per-contact state are computed or stored.
+/// type Law = ContactLaw<f32, LinearSpringDashpot<f32>, Frictionless, Micromath, NonRotating>;
+/// let law: Law = ContactLaw::new(LinearSpringDashpot::new(500.0, 0.9).unwrap(), Frictionless)
+///     .with_backend::<Micromath>()
+///     .without_rotation();
+///
+/// let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+/// let sphere = Sphere::solid(Vec3::new(0.0, 0.0, 0.99e-3), 1.0e-3, 2500.0);
+/// let dt = law.time_step(1.0e-6, sphere.mass).unwrap();
+/// let Interaction::Touching(contact) = law.sphere_wall(&sphere, &floor, &mut (), dt).unwrap() else {
+///     unreachable!()
+/// };
+/// assert!(contact.force_on_i().z > 0.0); // the floor pushes the sphere up
+/// assert_eq!(contact.torque_on_i, Vec3::ZERO);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct ContactLaw<F: Float, N, T, M = <F as Float>::DefaultBackend, R = Rotating> {
     normal: N,

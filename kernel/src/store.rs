@@ -33,6 +33,42 @@ impl ContactKey {
 /// [`ContactHistory::evaluate`] inserts a state on first touch, updates it while touching and
 /// drops it when the contact ends. A new contact that finds the store full gets
 /// [`ContactError::HistoryFull`], and nothing already stored is changed.
+///
+/// ```
+/// use soft_sphere::{
+///     ContactError, ContactHistory, ContactKey, ContactLaw, LinearSpringDashpot, ModelAA, Sphere,
+///     SpringDisplacement, TangentialParameters, Vec3,
+/// };
+///
+/// let law = ContactLaw::new(
+///     LinearSpringDashpot::new(1.0e4_f32, 0.8).unwrap(),
+///     ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+/// );
+/// let dt = law.time_step(1.0e-6, 5.0e-6).unwrap();
+/// let spheres = [
+///     Sphere::solid(Vec3::new(0.0, 0.0, 0.0), 1.0e-3, 2500.0),
+///     Sphere::solid(Vec3::new(1.9e-3, 0.0, 0.0), 1.0e-3, 2500.0),
+///     Sphere::solid(Vec3::new(3.8e-3, 0.0, 0.0), 1.0e-3, 2500.0),
+///     Sphere::solid(Vec3::new(5.7e-3, 0.0, 0.0), 1.0e-3, 2500.0),
+/// ];
+///
+/// // Room for two contacts.
+/// let mut history: ContactHistory<SpringDisplacement<f32>, 2> = ContactHistory::new();
+/// let mut step = |i: usize, j: usize, history: &mut ContactHistory<_, 2>| {
+///     let (a, b) = (&spheres[i], &spheres[j]);
+///     history.evaluate(ContactKey::new(i as u32, j as u32), |state| {
+///         law.sphere_sphere(a, b, state, dt)
+///     })
+/// };
+/// assert!(step(0, 1, &mut history).is_ok());
+/// assert!(step(1, 2, &mut history).is_ok());
+/// assert_eq!(step(0, 2, &mut history).map(|i| i.forces().is_some()), Ok(false)); // apart: no slot
+/// // A third touching pair does not fit: an error, and the two stored contacts are untouched.
+/// let before = (history.get(ContactKey::new(0, 1)).copied(), history.get(ContactKey::new(1, 2)).copied());
+/// assert_eq!(step(2, 3, &mut history), Err(ContactError::HistoryFull));
+/// let after = (history.get(ContactKey::new(0, 1)).copied(), history.get(ContactKey::new(1, 2)).copied());
+/// assert_eq!((history.len(), before), (2, after));
+/// ```
 #[derive(Clone, Debug)]
 pub struct ContactHistory<S, const N: usize> {
     states: FnvIndexMap<ContactKey, S, N>,
