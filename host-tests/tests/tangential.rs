@@ -202,8 +202,8 @@ fn stateless_law_rolls_off_at_five_sevenths_below_the_threshold() {
 fn model_aa_matches_the_mfix_linear_reference() {
     // REFERENCE 4.2: MFiX DEM05 inputs; MFiX integrates at t_c/50 with the contact-plane arm.
     // Below 5 degrees MFiX's published values sit 1-2.3 % lower in e_t and 4-15 % higher in spin
-    // than Model AA (at t_c/50 and at t_c/1000, with either arm); that residual is examined by the validation run,
-    // so this check starts at 5 degrees.
+    // than Model AA (at t_c/50 and at t_c/1000, with either arm); that residual is examined by the
+    // validation run, so this check starts at 5 degrees.
     let normal = LinearSpringDashpot::new(1.72e7, 1.0).unwrap();
     let law = ContactLaw::new(normal, ModelAA(parameters::<f64>(1.48e7, 0.0, FRICTION)));
     let rows = data::rows("linear_model_reference_mfix_dem05.csv");
@@ -284,24 +284,21 @@ fn the_talks_model_comparison_is_reproduced() {
         |angle| rebound(ModelA(p), angle),
         |angle| rebound(ModelB(p), angle),
     );
-    let run = |law: &dyn Fn(f64) -> (f64, f64), angle: f64| law(angle);
     // Model AA: about 0.594 at 15 deg, minimum about 0.59 near 17.5 deg (the elastic recoil dip).
-    let (aa15, aa175, aa20) = (run(&aa, 15.0).0, run(&aa, 17.5).0, run(&aa, 20.0).0);
+    let (aa15, aa175, aa20) = (aa(15.0).0, aa(17.5).0, aa(20.0).0);
     assert!((aa15 - 0.594).abs() < 0.005, "AA(15) = {aa15}");
     assert!(
         aa175 < aa15 && aa175 < aa20 && (aa175 - 0.59).abs() < 0.005,
         "AA(17.5) = {aa175}"
     );
     // Model A: dips to about 0.40 at 15 deg and over-predicts the peak spin (about 676 rad/s).
-    let a15 = run(&a, 15.0).0;
+    let a15 = a(15.0).0;
     assert!((a15 - 0.40).abs() < 0.01, "A(15) = {a15}");
-    let a_peak = (10..=30)
-        .map(|angle| run(&a, angle as f64).1)
-        .fold(0.0, f64::max);
+    let a_peak = (10..=30).map(|angle| a(angle as f64).1).fold(0.0, f64::max);
     assert!(relative_error(a_peak, 676.0) < 0.02, "A peak spin {a_peak}");
     // Model B: locks at 5/7 from about 5 deg up to the threshold.
     for angle in (5..=30).step_by(5) {
-        let b_e_t = run(&b, angle as f64).0;
+        let b_e_t = b(angle as f64).0;
         assert!(
             relative_error(b_e_t, 5.0 / 7.0) < 0.01,
             "B({angle}) = {b_e_t}"
