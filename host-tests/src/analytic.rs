@@ -68,3 +68,24 @@ pub fn rigid_body_oblique(angle_deg: f64, restitution: f64, friction: f64) -> (f
 pub fn rolling_onset(initial_speed: f64, friction: f64, gravity: f64) -> f64 {
     2.0 * initial_speed / (7.0 * friction * gravity)
 }
+
+/// Contact duration of an impact whose normal force is clipped at zero: the force vanishes at
+/// `t_f` (`wd t_f = 2 atan(wd / beta)`), after which the sphere coasts out of the remaining overlap
+/// at its speed then, `t_c = t_f + delta(t_f) / |delta'(t_f)|`.
+pub fn clamped_contact_duration(stiffness: f64, restitution: f64, mass: f64) -> f64 {
+    let (w0, beta, wd) = oscillator(stiffness, restitution, mass);
+    if beta == 0.0 {
+        return PI / w0;
+    }
+    if wd == 0.0 {
+        // Critical damping: delta = v0 t e^(-beta t), the force vanishes at t = 2 / beta with
+        // delta = 2 v0 e^-2 / beta and speed v0 e^-2.
+        return 4.0 / beta;
+    }
+    let t_force_free = 2.0 * (wd / beta).atan() / wd;
+    // delta and delta' share the factor (v0 / wd) exp(-beta t), which cancels.
+    let phase = wd * t_force_free;
+    let overlap = phase.sin();
+    let rate = wd * phase.cos() - beta * phase.sin();
+    t_force_free + overlap / -rate
+}

@@ -1,7 +1,7 @@
 //! Drives one sphere into a wall with a kernel law and the kernel's symplectic Euler step, and
 //! reports what came out. Used by the normal-impact and oblique-impact tests.
 
-use soft_sphere::motion::advance_solid_sphere;
+use soft_sphere::motion::{advance_solid_sphere, drift, half_kick};
 use soft_sphere::{
     ContactError, ContactForces, ContactLaw, Float, Interaction, MathBackend, NormalModel,
     Rotation, Sphere, TangentialModel, TimeStep, Vec3, Wall,
@@ -18,6 +18,28 @@ pub struct ImpactOutcome<F> {
     pub max_overlap: f64,
     /// Steps with the sphere touching the wall.
     pub steps_in_contact: usize,
+}
+
+/// The time integrators the kernel ships (`soft_sphere::motion`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Integrator {
+    /// Semi-implicit Euler: contact at the current state, kick, then drift.
+    SymplecticEuler,
+    /// Velocity Verlet: half kick, drift, contact at the half-step velocity, half kick.
+    VelocityVerlet,
+}
+
+impl Integrator {
+    /// Both, in a fixed order.
+    pub const ALL: [Self; 2] = [Self::SymplecticEuler, Self::VelocityVerlet];
+
+    /// A short name for tables and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::SymplecticEuler => "symplectic_euler",
+            Self::VelocityVerlet => "velocity_verlet",
+        }
+    }
 }
 
 /// The floor `z = 0` with its normal up.
@@ -38,13 +60,45 @@ pub fn incoming_sphere<F: Float>(radius: F, density: F, speed: f64, angle_deg: f
     sphere
 }
 
-/// Integrates `sphere` against `wall` until it separates (or `max_steps` pass), calling `observe`
-/// with the contact forces of every step in contact.
+/// Integrates `sphere` against `wall` with symplectic Euler until it separates (or `max_steps`
+/// pass), calling `observe` with the contact forces of every step in contact.
 ///
 /// # Errors
 /// The first [`ContactError`] the kernel returns; `Err(None)` when the sphere had not separated
 /// after `max_steps`.
 pub fn wall_impact<F, N, T, M, R>(
+    law: &ContactLaw<F, N, T, M, R>,
+    sphere: Sphere<F>,
+    wall: &Wall<F>,
+    time_step: TimeStep<F>,
+    max_steps: usize,
+    observe: impl FnMut(&ContactForces<F>),
+) -> Result<ImpactOutcome<F>, Option<ContactError>>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    wall_impact_with(
+        Integrator::SymplecticEuler,
+        law,
+        sphere,
+        wall,
+        time_step,
+        max_steps,
+        observe,
+    )
+}
+
+/// [`wall_impact`] with a chosen integrator. The sphere starts at `t = 0`, which must be the
+/// moment of first touch for `contact_duration` to mean the duration.
+///
+/// # Errors
+/// As [`wall_impact`].
+pub fn wall_impact_with<F, N, T, M, R>(
+    integrator: Integrator,
     law: &ContactLaw<F, N, T, M, R>,
     mut sphere: Sphere<F>,
     wall: &Wall<F>,
@@ -65,8 +119,19 @@ where
     let mut steps_in_contact = 0;
     let mut max_overlap = 0.0f64;
     let mut last_overlap = 0.0f64;
+    // Velocity Verlet carries the last forces into the next step's first half kick.
+    let mut carried = (Vec3::ZERO, Vec3::ZERO);
     for step in 0..max_steps {
-        match law
+        // Symplectic Euler evaluates at the start of the step, velocity Verlet at its end.
+        let evaluated_at = match integrator {
+            Integrator::SymplecticEuler => step as f64,
+            Integrator::VelocityVerlet => {
+                half_kick(&mut sphere, carried.0, carried.1, time_step);
+                drift(&mut sphere, time_step);
+                step as f64 + 1.0
+            }
+        };
+        let (force, torque) = match law
             .sphere_wall(&sphere, wall, &mut state, time_step)
             .map_err(Some)?
         {
@@ -76,18 +141,16 @@ where
                 last_overlap = forces.overlap.to_f64();
                 max_overlap = max_overlap.max(last_overlap);
                 observe(&forces);
-                advance_solid_sphere(
-                    &mut sphere,
-                    forces.force_on_i(),
-                    forces.torque_on_i,
-                    time_step,
-                );
+                (forces.force_on_i(), forces.torque_on_i)
             }
             Interaction::Apart if touched => {
-                // Overlap went from last_overlap > 0 to the current (<= 0) over the previous step.
+                if integrator == Integrator::VelocityVerlet {
+                    half_kick(&mut sphere, Vec3::ZERO, Vec3::ZERO, time_step);
+                }
+                // Overlap went from last_overlap > 0 to the current (<= 0) over the last step.
                 let now = (sphere.radius - wall.distance_to(sphere.position)).to_f64();
                 let fraction = last_overlap / (last_overlap - now);
-                let contact_duration = (step as f64 - 1.0 + fraction) * dt;
+                let contact_duration = (evaluated_at - 1.0 + fraction) * dt;
                 return Ok(ImpactOutcome {
                     rebound: sphere,
                     contact_duration,
@@ -95,8 +158,15 @@ where
                     steps_in_contact,
                 });
             }
-            Interaction::Apart => {
-                advance_solid_sphere(&mut sphere, Vec3::ZERO, Vec3::ZERO, time_step);
+            Interaction::Apart => (Vec3::ZERO, Vec3::ZERO),
+        };
+        match integrator {
+            Integrator::SymplecticEuler => {
+                advance_solid_sphere(&mut sphere, force, torque, time_step);
+            }
+            Integrator::VelocityVerlet => {
+                half_kick(&mut sphere, force, torque, time_step);
+                carried = (force, torque);
             }
         }
     }

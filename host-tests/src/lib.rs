@@ -1,7 +1,9 @@
 //! Test and validation machinery for `soft-sphere`: a small impact driver built on the kernel's
-//! public API, and closed-form physics written independently of the kernel, so that tests compare
-//! the kernel against theory and data rather than against itself.
+//! public API, closed-form physics written independently of the kernel, and the validation cases,
+//! so that tests compare the kernel against theory and data rather than against itself.
 
 pub mod analytic;
 pub mod data;
 pub mod impact;
+pub mod plot;
+pub mod validation;

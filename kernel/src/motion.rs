@@ -1,5 +1,12 @@
 //! Advancing a sphere by one step, for callers (tests, examples, small loops) without an
-//! integrator of their own.
+//! integrator of their own: semi-implicit (symplectic) Euler, and velocity Verlet in its two halves.
+//!
+//! Where the contact call goes, so that a history law sees each step's slip exactly once:
+//! - symplectic Euler: evaluate the contact at the current positions and velocities, then
+//!   [`advance_solid_sphere`];
+//! - velocity Verlet: [`half_kick`] with the previous step's forces, [`drift`], evaluate the
+//!   contact at the new positions (with the half-step velocities), then [`half_kick`] with the new
+//!   forces. Keep the new forces for the next step's first half-kick.
 
 use crate::body::Sphere;
 use crate::float::Float;
@@ -17,8 +24,30 @@ pub fn advance_solid_sphere<F: Float>(
     torque: Vec3<F>,
     time_step: TimeStep<F>,
 ) {
-    let dt = time_step.seconds();
+    kick(sphere, force, torque, time_step.seconds());
+    drift(sphere, time_step);
+}
+
+/// Velocity Verlet's half kick: linear and angular velocity advanced by half a step under a total
+/// force and torque (homogeneous solid sphere).
+#[inline]
+pub fn half_kick<F: Float>(
+    sphere: &mut Sphere<F>,
+    force: Vec3<F>,
+    torque: Vec3<F>,
+    time_step: TimeStep<F>,
+) {
+    kick(sphere, force, torque, time_step.seconds() * F::HALF);
+}
+
+/// Velocity Verlet's drift: the position advanced by a whole step at the current velocity.
+#[inline]
+pub fn drift<F: Float>(sphere: &mut Sphere<F>, time_step: TimeStep<F>) {
+    sphere.position += sphere.velocity * time_step.seconds();
+}
+
+#[inline(always)]
+fn kick<F: Float>(sphere: &mut Sphere<F>, force: Vec3<F>, torque: Vec3<F>, dt: F) {
     sphere.velocity += force * (dt / sphere.mass);
     sphere.angular_velocity += torque * (dt / sphere.solid_moment_of_inertia());
-    sphere.position += sphere.velocity * dt;
 }

@@ -1,0 +1,103 @@
+//! The validation run's cases (REFERENCE section 4), with the tolerances the `validate` binary
+//! enforces: this test fails exactly when `cargo run -p host-tests --bin validate` would exit
+//! non-zero.
+
+use host_tests::validation::{CaseOutput, kharaz, normal, plate};
+
+fn assert_all_pass(case: &CaseOutput) {
+    assert!(!case.checks.is_empty(), "the case made no checks");
+    let failures: Vec<String> = case.failures().iter().map(|c| c.to_string()).collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn normal_impact_matches_the_closed_forms() {
+    let case = normal::case(|_| {});
+    assert_all_pass(&case);
+    // Free and clamped rebound ratio and duration for 7 restitution coefficients.
+    assert_eq!(case.checks.len(), 28);
+}
+
+#[test]
+fn kharaz_sweep_converges_and_meets_rigid_body_theory() {
+    let case = kharaz::talk_sweep(|_| {});
+    assert_all_pass(&case);
+    // Every model but C is checked above the sliding threshold (about 32.5 deg) ...
+    for model in ["stateless", "model_a", "model_b", "model_aa"] {
+        assert!(
+            case.checks
+                .iter()
+                .any(|c| c.what.contains(model) && c.what.contains("rigid body")),
+            "{model} has no rigid-body check"
+        );
+    }
+    // ... and Model C is shown, not checked: its dashpot never reaches the Coulomb limit.
+    assert!(!case.checks.iter().any(|c| c.what.contains("model_c")));
+    // Model AA is the closest to the experiment on every measured quantity.
+    let rms = case.table("kharaz_rms");
+    for column in [
+        "rms_tangential_cor",
+        "rms_rebound_spin_rad_per_s",
+        "rms_rebound_angle_deg",
+    ] {
+        let values = rms.column(column);
+        let aa = values[kharaz::Model::ALL
+            .iter()
+            .position(|m| *m == kharaz::Model::ModelAA)
+            .unwrap()];
+        assert!(values.iter().all(|v| *v >= aa), "{column}: {values:?}");
+    }
+}
+
+#[test]
+fn model_aa_matches_the_mfix_reference_within_the_stated_tolerances() {
+    let case = kharaz::mfix_check(|_| {});
+    assert_all_pass(&case);
+    assert_eq!(case.checks.len(), 60);
+}
+
+#[test]
+fn plate_rolls_at_five_sevenths_on_time_for_aa_b_and_the_stateless_law() {
+    let case = plate::case(|_| {});
+    assert_all_pass(&case);
+    let summary = case.table("plate_summary");
+    let (onset, u) = (
+        summary.column("rolling_onset_s"),
+        summary.column("final_velocity_ratio"),
+    );
+    let index = |m| kharaz::Model::ALL.iter().position(|x| *x == m).unwrap();
+    // Model A's unbounded spring throws the sphere off 5/7 (REFERENCE 4.3) ...
+    assert!((u[index(kharaz::Model::ModelA)] - 5.0 / 7.0).abs() > 0.05);
+    // ... and Model C's weak dashpot near zero slip reaches rolling late.
+    let theory = 2.0 / (7.0 * 0.7 * 9.81);
+    assert!(onset[index(kharaz::Model::ModelC)] > 1.1 * theory);
+}
+
+#[test]
+fn a_check_fails_outside_its_tolerance_and_on_nan() {
+    let mut case = CaseOutput::default();
+    case.relative("inside", 1.004, 1.0, 5e-3);
+    case.relative("outside", 1.006, 1.0, 5e-3);
+    case.absolute("nan", f64::NAN, 1.0, 1.0);
+    let failed: Vec<&str> = case.failures().iter().map(|c| c.what.as_str()).collect();
+    assert_eq!(failed, ["outside", "nan"]);
+}
+
+#[test]
+fn velocity_verlet_rebounds_with_e_and_converges_at_first_order() {
+    use host_tests::impact::Integrator;
+    for e in normal::RESTITUTIONS {
+        let fine = normal::head_on(e, false, 1000.0, Integrator::VelocityVerlet);
+        assert!((fine.rebound.velocity.z - e).abs() < 1e-3, "e = {e}");
+    }
+    // First order: the error at e = 0.5 halves when the step halves (ratio 2 within 10 %).
+    let error = |steps| {
+        normal::head_on(0.5, false, steps, Integrator::VelocityVerlet)
+            .rebound
+            .velocity
+            .z
+            - 0.5
+    };
+    let ratio = error(100.0) / error(200.0);
+    assert!((ratio - 2.0).abs() < 0.2, "ratio {ratio}");
+}
