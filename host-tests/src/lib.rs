@@ -6,4 +6,5 @@ pub mod analytic;
 pub mod data;
 pub mod impact;
 pub mod plot;
+pub mod strategies;
 pub mod validation;

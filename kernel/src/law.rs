@@ -217,8 +217,11 @@ where
             .min_of(tangential)
     }
 
-    /// A step of 1/50 of the contact duration (MFiX's default). When the duration is infinite
-    /// (critical damping, no clamp), 1/50 of the undamped half-period `pi / w0` instead.
+    /// A step of 1/50 of the contact duration (MFiX's default), and never more than a fifth of
+    /// [`ContactLaw::critical_time_step`]: a stiff tangential spring (`k_t/k_n` near 10 with
+    /// rotation) or the stateless law's stick-phase dashpot at low restitution can be faster than
+    /// the normal mode. When the duration is infinite (critical damping, no clamp), 1/50 of the
+    /// undamped half-period `pi / w0` stands in for it.
     pub fn recommended_time_step(&self, effective_mass: F) -> F {
         let duration = self.contact_duration(effective_mass);
         let duration = if duration.is_finite() {
@@ -226,7 +229,8 @@ where
         } else {
             F::PI / self.oscillator(effective_mass).natural_frequency
         };
-        duration / F::from_f64(50.0)
+        let margin = self.critical_time_step(effective_mass) / F::from_f64(5.0);
+        (duration / F::from_f64(50.0)).min_of(margin)
     }
 
     /// Checks a time step for a scene whose lightest contact has effective mass

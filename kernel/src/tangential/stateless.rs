@@ -10,8 +10,9 @@ use crate::normal::NormalOscillator;
 ///
 /// The elapsed time comes from the linear normal oscillator, whose overlap is
 /// `delta = (v0 / wd) exp(-beta t) sin(wd t)` in a binary impact, so that
-/// `t_e = atan2(wd delta, delta' + beta delta) / wd`, in `[0, pi / wd]`. At critical damping
-/// (`wd = 0`) the limit `delta / (delta' + beta delta)` is used, bounded by `pi / beta`.
+/// `t_e = atan2(wd delta, delta' + beta delta) / wd`, in `[0, pi / max(wd, beta)]`. At critical
+/// damping (`wd = 0`) the limit `delta / (delta' + beta delta)` is used, with the same bound
+/// `pi / beta`, so that the estimate is continuous as `e -> 0`.
 ///
 /// It reproduces rigid-body theory (tangential restitution 5/7 below the gross-sliding threshold,
 /// the closed form above it, rolling at 5/7 of the initial speed on a plate). Like every stateless
@@ -35,7 +36,10 @@ pub fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
         let phase = M::atan2(wd * overlap, cosine_part)
             .max_of(F::ZERO)
             .min_of(F::PI);
-        phase / wd
+        // Capped at pi / beta as well, so that the estimate is continuous as wd -> 0 (e -> 0):
+        // without it, a rounding-sized wd would give pi / wd late in a contact. The cap only acts
+        // when wd < beta, that is e < exp(-pi) = 0.043.
+        (phase / wd).min_of(F::PI / beta)
     } else {
         let bound = F::PI / beta;
         if cosine_part > F::ZERO {
@@ -72,11 +76,7 @@ impl<F: Float> TangentialModel<F> for Stateless<F> {
     /// While sticking the law is a dashpot of strength `k_t t_e + eta_t`, with `t_e` at most
     /// `pi / wd`: the explicit update of the slip stays stable below `2 m_t / (k_t pi / wd + eta_t)`.
     fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
-        let longest = if oscillator.damped_frequency > F::ZERO {
-            F::PI / oscillator.damped_frequency
-        } else {
-            F::PI / oscillator.decay_rate
-        };
+        let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
         let dashpot = self.0.stiffness() * longest + self.0.dashpot(oscillator);
         F::TWO * tangential_mass / dashpot
     }
