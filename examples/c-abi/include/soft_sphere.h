@@ -1,0 +1,528 @@
+/* soft-sphere C ABI. Generated from examples/c-abi/src/lib.rs by cbindgen; do not edit. */
+
+#ifndef SOFT_SPHERE_H
+#define SOFT_SPHERE_H
+
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/**
+ * Success.
+ */
+#define SS_OK 0
+
+/**
+ * A null pointer was passed.
+ */
+#define SS_ERR_NULL 1
+
+/**
+ * A parameter is not finite.
+ */
+#define SS_ERR_NON_FINITE_PARAMETER 2
+
+/**
+ * A parameter that must be positive is not.
+ */
+#define SS_ERR_NOT_POSITIVE 3
+
+/**
+ * A parameter that must not be negative is.
+ */
+#define SS_ERR_NEGATIVE 4
+
+/**
+ * Restitution outside [0, 1].
+ */
+#define SS_ERR_RESTITUTION 5
+
+/**
+ * The time step is at or past the law's stability limit.
+ */
+#define SS_ERR_UNSTABLE_TIME_STEP 6
+
+/**
+ * Unknown model code.
+ */
+#define SS_ERR_UNKNOWN_MODEL 7
+
+/**
+ * A position, velocity, radius or mass is not finite.
+ */
+#define SS_ERR_NON_FINITE_INPUT 8
+
+/**
+ * A radius is not positive.
+ */
+#define SS_ERR_NON_POSITIVE_RADIUS 9
+
+/**
+ * A mass is not positive.
+ */
+#define SS_ERR_NON_POSITIVE_MASS 10
+
+/**
+ * The two centres coincide.
+ */
+#define SS_ERR_COINCIDENT_CENTRES 11
+
+/**
+ * The result would not be finite.
+ */
+#define SS_ERR_NON_FINITE_RESULT 12
+
+/**
+ * The wall normal is zero or not finite.
+ */
+#define SS_ERR_BAD_WALL 13
+
+/**
+ * The stateless (simplified) law: no tangential history is read or written.
+ */
+#define SS_MODEL_STATELESS 0
+
+/**
+ * Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
+ */
+#define SS_MODEL_AA 1
+
+/**
+ * A validated contact law and its checked time step (opaque to C).
+ */
+typedef struct ss_law_f32 ss_law_f32;
+
+/**
+ * A validated contact law and its checked time step (opaque to C).
+ */
+typedef struct ss_law_f64 ss_law_f64;
+
+/**
+ * Law parameters, validated once by the constructor.
+ */
+typedef struct {
+  /**
+   * `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+   */
+  int32_t model;
+  /**
+   * k_n (N/m).
+   */
+  double normal_stiffness;
+  /**
+   * Normal restitution e, in [0, 1].
+   */
+  double restitution;
+  /**
+   * k_t (N/m).
+   */
+  double tangential_stiffness;
+  /**
+   * eta_t / eta_n.
+   */
+  double damping_ratio;
+  /**
+   * Coulomb mu.
+   */
+  double friction;
+  /**
+   * The time step (s) every call will use.
+   */
+  double time_step;
+  /**
+   * The smallest effective mass of any contact the step is checked for (kg).
+   */
+  double smallest_effective_mass;
+} ss_params_f64;
+
+/**
+ * A vector of three components.
+ */
+typedef struct {
+  /**
+   * x
+   */
+  double x;
+  /**
+   * y
+   */
+  double y;
+  /**
+   * z
+   */
+  double z;
+} ss_vec3_f64;
+
+/**
+ * A sphere: SI units; `angular_velocity` in rad/s.
+ */
+typedef struct {
+  /**
+   * Centre (m).
+   */
+  ss_vec3_f64 position;
+  /**
+   * Velocity (m/s).
+   */
+  ss_vec3_f64 velocity;
+  /**
+   * Angular velocity (rad/s).
+   */
+  ss_vec3_f64 angular_velocity;
+  /**
+   * Radius (m).
+   */
+  double radius;
+  /**
+   * Mass (kg).
+   */
+  double mass;
+} ss_sphere_f64;
+
+/**
+ * Per-contact state, owned by the caller: zero for a new contact.
+ */
+typedef struct {
+  /**
+   * Stored tangential displacement (m); unused by the stateless law.
+   */
+  ss_vec3_f64 displacement;
+} ss_state_f64;
+
+/**
+ * The result of one contact evaluation. Forces act on j (on the sphere, for a wall); i receives
+ * the negative.
+ */
+typedef struct {
+  /**
+   * 1 when touching; 0 when apart (then every other field is zero).
+   */
+  int32_t touching;
+  /**
+   * 1 when the contact slid this step.
+   */
+  int32_t sliding;
+  /**
+   * Overlap (m).
+   */
+  double overlap;
+  /**
+   * Normal force magnitude (N), positive when repulsive.
+   */
+  double normal_force;
+  /**
+   * Total contact force on j (N).
+   */
+  ss_vec3_f64 force_on_j;
+  /**
+   * Torque on i (N m).
+   */
+  ss_vec3_f64 torque_on_i;
+  /**
+   * Torque on j (N m).
+   */
+  ss_vec3_f64 torque_on_j;
+} ss_forces_f64;
+
+/**
+ * A plane wall through `point` with outward `normal` (any length), moving at `velocity`.
+ */
+typedef struct {
+  /**
+   * A point on the plane (m).
+   */
+  ss_vec3_f64 point;
+  /**
+   * The side the spheres are on.
+   */
+  ss_vec3_f64 normal;
+  /**
+   * Wall velocity (m/s).
+   */
+  ss_vec3_f64 velocity;
+} ss_wall_f64;
+
+/**
+ * Law parameters, validated once by the constructor.
+ */
+typedef struct {
+  /**
+   * `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+   */
+  int32_t model;
+  /**
+   * k_n (N/m).
+   */
+  float normal_stiffness;
+  /**
+   * Normal restitution e, in [0, 1].
+   */
+  float restitution;
+  /**
+   * k_t (N/m).
+   */
+  float tangential_stiffness;
+  /**
+   * eta_t / eta_n.
+   */
+  float damping_ratio;
+  /**
+   * Coulomb mu.
+   */
+  float friction;
+  /**
+   * The time step (s) every call will use.
+   */
+  float time_step;
+  /**
+   * The smallest effective mass of any contact the step is checked for (kg).
+   */
+  float smallest_effective_mass;
+} ss_params_f32;
+
+/**
+ * A vector of three components.
+ */
+typedef struct {
+  /**
+   * x
+   */
+  float x;
+  /**
+   * y
+   */
+  float y;
+  /**
+   * z
+   */
+  float z;
+} ss_vec3_f32;
+
+/**
+ * A sphere: SI units; `angular_velocity` in rad/s.
+ */
+typedef struct {
+  /**
+   * Centre (m).
+   */
+  ss_vec3_f32 position;
+  /**
+   * Velocity (m/s).
+   */
+  ss_vec3_f32 velocity;
+  /**
+   * Angular velocity (rad/s).
+   */
+  ss_vec3_f32 angular_velocity;
+  /**
+   * Radius (m).
+   */
+  float radius;
+  /**
+   * Mass (kg).
+   */
+  float mass;
+} ss_sphere_f32;
+
+/**
+ * Per-contact state, owned by the caller: zero for a new contact.
+ */
+typedef struct {
+  /**
+   * Stored tangential displacement (m); unused by the stateless law.
+   */
+  ss_vec3_f32 displacement;
+} ss_state_f32;
+
+/**
+ * The result of one contact evaluation. Forces act on j (on the sphere, for a wall); i receives
+ * the negative.
+ */
+typedef struct {
+  /**
+   * 1 when touching; 0 when apart (then every other field is zero).
+   */
+  int32_t touching;
+  /**
+   * 1 when the contact slid this step.
+   */
+  int32_t sliding;
+  /**
+   * Overlap (m).
+   */
+  float overlap;
+  /**
+   * Normal force magnitude (N), positive when repulsive.
+   */
+  float normal_force;
+  /**
+   * Total contact force on j (N).
+   */
+  ss_vec3_f32 force_on_j;
+  /**
+   * Torque on i (N m).
+   */
+  ss_vec3_f32 torque_on_i;
+  /**
+   * Torque on j (N m).
+   */
+  ss_vec3_f32 torque_on_j;
+} ss_forces_f32;
+
+/**
+ * A plane wall through `point` with outward `normal` (any length), moving at `velocity`.
+ */
+typedef struct {
+  /**
+   * A point on the plane (m).
+   */
+  ss_vec3_f32 point;
+  /**
+   * The side the spheres are on.
+   */
+  ss_vec3_f32 normal;
+  /**
+   * Wall velocity (m/s).
+   */
+  ss_vec3_f32 velocity;
+} ss_wall_f32;
+
+#ifdef __cplusplus
+extern "C" {
+#endif // __cplusplus
+
+/**
+ * Validates `*params` and writes a new law handle to `*out` (free it with the matching
+ * `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
+ *
+ * # Safety
+ * `params` and `out` must be valid pointers or null.
+ */
+int32_t ss_law_new_f64(const ss_params_f64 *params, ss_law_f64 **out);
+
+/**
+ * Frees a law handle (null is ignored).
+ *
+ * # Safety
+ * `law` must come from the matching constructor and not be used afterwards.
+ */
+void ss_law_free_f64(ss_law_f64 *law);
+
+/**
+ * One sphere-sphere evaluation: reads and updates `*state`, writes `*out`. On error
+ * neither is changed.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_sphere_sphere_f64(const ss_law_f64 *law,
+                             const ss_sphere_f64 *i,
+                             const ss_sphere_f64 *j,
+                             ss_state_f64 *state,
+                             ss_forces_f64 *out);
+
+/**
+ * One sphere-wall evaluation; `force_on_j` and `torque_on_j` are what the sphere
+ * receives. On error neither `*state` nor `*out` is changed.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_sphere_wall_f64(const ss_law_f64 *law,
+                           const ss_sphere_f64 *sphere,
+                           const ss_wall_f64 *wall,
+                           ss_state_f64 *state,
+                           ss_forces_f64 *out);
+
+/**
+ * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
+ * Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_advance_sphere_f64(const ss_law_f64 *law,
+                              ss_sphere_f64 *sphere,
+                              ss_vec3_f64 force,
+                              ss_vec3_f64 torque);
+
+/**
+ * Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
+ * (infinite at e = 0). `*out` is untouched on error.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_contact_duration_f64(const ss_params_f64 *params, double m_star, double *out);
+
+/**
+ * Validates `*params` and writes a new law handle to `*out` (free it with the matching
+ * `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
+ *
+ * # Safety
+ * `params` and `out` must be valid pointers or null.
+ */
+int32_t ss_law_new_f32(const ss_params_f32 *params, ss_law_f32 **out);
+
+/**
+ * Frees a law handle (null is ignored).
+ *
+ * # Safety
+ * `law` must come from the matching constructor and not be used afterwards.
+ */
+void ss_law_free_f32(ss_law_f32 *law);
+
+/**
+ * One sphere-sphere evaluation: reads and updates `*state`, writes `*out`. On error
+ * neither is changed.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_sphere_sphere_f32(const ss_law_f32 *law,
+                             const ss_sphere_f32 *i,
+                             const ss_sphere_f32 *j,
+                             ss_state_f32 *state,
+                             ss_forces_f32 *out);
+
+/**
+ * One sphere-wall evaluation; `force_on_j` and `torque_on_j` are what the sphere
+ * receives. On error neither `*state` nor `*out` is changed.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_sphere_wall_f32(const ss_law_f32 *law,
+                           const ss_sphere_f32 *sphere,
+                           const ss_wall_f32 *wall,
+                           ss_state_f32 *state,
+                           ss_forces_f32 *out);
+
+/**
+ * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
+ * Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_advance_sphere_f32(const ss_law_f32 *law,
+                              ss_sphere_f32 *sphere,
+                              ss_vec3_f32 force,
+                              ss_vec3_f32 torque);
+
+/**
+ * Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
+ * (infinite at e = 0). `*out` is untouched on error.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_contact_duration_f32(const ss_params_f32 *params, float m_star, float *out);
+
+#ifdef __cplusplus
+}  // extern "C"
+#endif  // __cplusplus
+
+#endif  /* SOFT_SPHERE_H */

@@ -1,0 +1,592 @@
+//! C ABI for `soft-sphere`: build and validate a contact law once, then call it per contact with
+//! plain structs. Every entry point returns an error code (`SS_OK` = 0) and never unwinds into C;
+//! outputs are written only on success, so nothing the caller gave is half-updated.
+//!
+//! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law and Model AA
+//! (`SS_MODEL_*`). The per-contact state (`ss_state_*`) is the caller's: zero it for a new contact,
+//! keep it while the contact lasts (the kernel resets it when the pair separates).
+//!
+//! The header `include/soft_sphere.h` is generated from this file by cbindgen; the test
+//! `header_is_current` fails when it is stale (`UPDATE_HEADER=1 cargo test -p soft-sphere-ffi`
+//! rewrites it).
+
+#![allow(non_camel_case_types)] // C names: ss_law_f64, ss_sphere_f32, ...
+
+use soft_sphere::motion::advance_solid_sphere;
+use soft_sphere::{
+    ContactError, ContactLaw, Float, Interaction, LinearSpringDashpot, ModelAA, ParameterError,
+    Sphere, SpringDisplacement, Stateless, TangentialParameters, TimeStep, Vec3, Wall,
+};
+
+/// Success.
+pub const SS_OK: i32 = 0;
+/// A null pointer was passed.
+pub const SS_ERR_NULL: i32 = 1;
+/// A parameter is not finite.
+pub const SS_ERR_NON_FINITE_PARAMETER: i32 = 2;
+/// A parameter that must be positive is not.
+pub const SS_ERR_NOT_POSITIVE: i32 = 3;
+/// A parameter that must not be negative is.
+pub const SS_ERR_NEGATIVE: i32 = 4;
+/// Restitution outside [0, 1].
+pub const SS_ERR_RESTITUTION: i32 = 5;
+/// The time step is at or past the law's stability limit.
+pub const SS_ERR_UNSTABLE_TIME_STEP: i32 = 6;
+/// Unknown model code.
+pub const SS_ERR_UNKNOWN_MODEL: i32 = 7;
+/// A position, velocity, radius or mass is not finite.
+pub const SS_ERR_NON_FINITE_INPUT: i32 = 8;
+/// A radius is not positive.
+pub const SS_ERR_NON_POSITIVE_RADIUS: i32 = 9;
+/// A mass is not positive.
+pub const SS_ERR_NON_POSITIVE_MASS: i32 = 10;
+/// The two centres coincide.
+pub const SS_ERR_COINCIDENT_CENTRES: i32 = 11;
+/// The result would not be finite.
+pub const SS_ERR_NON_FINITE_RESULT: i32 = 12;
+/// The wall normal is zero or not finite.
+pub const SS_ERR_BAD_WALL: i32 = 13;
+
+/// The stateless (simplified) law: no tangential history is read or written.
+pub const SS_MODEL_STATELESS: i32 = 0;
+/// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
+pub const SS_MODEL_AA: i32 = 1;
+
+fn parameter_code(error: ParameterError) -> i32 {
+    match error {
+        ParameterError::NonFinite(_) => SS_ERR_NON_FINITE_PARAMETER,
+        ParameterError::NotPositive(_) => SS_ERR_NOT_POSITIVE,
+        ParameterError::Negative(_) => SS_ERR_NEGATIVE,
+        ParameterError::RestitutionOutOfRange => SS_ERR_RESTITUTION,
+        ParameterError::TimeStepUnstable { .. } => SS_ERR_UNSTABLE_TIME_STEP,
+    }
+}
+
+fn contact_code(error: ContactError) -> i32 {
+    match error {
+        ContactError::NonFiniteInput => SS_ERR_NON_FINITE_INPUT,
+        ContactError::NonPositiveRadius => SS_ERR_NON_POSITIVE_RADIUS,
+        ContactError::NonPositiveMass => SS_ERR_NON_POSITIVE_MASS,
+        ContactError::CoincidentCentres => SS_ERR_COINCIDENT_CENTRES,
+        _ => SS_ERR_NON_FINITE_RESULT,
+    }
+}
+
+/// Which law a handle holds.
+#[derive(Clone, Copy, Debug)]
+enum AnyLaw<F: Float> {
+    Stateless(ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>),
+    ModelAA(ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>),
+}
+
+/// A vector of three components.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_vec3<F> {
+    /// x
+    pub x: F,
+    /// y
+    pub y: F,
+    /// z
+    pub z: F,
+}
+
+impl<F: Float> From<ss_vec3<F>> for Vec3<F> {
+    fn from(v: ss_vec3<F>) -> Self {
+        Vec3::new(v.x, v.y, v.z)
+    }
+}
+
+impl<F: Float> From<Vec3<F>> for ss_vec3<F> {
+    fn from(v: Vec3<F>) -> Self {
+        Self {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        }
+    }
+}
+
+/// A sphere: SI units; `angular_velocity` in rad/s.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_sphere<F> {
+    /// Centre (m).
+    pub position: ss_vec3<F>,
+    /// Velocity (m/s).
+    pub velocity: ss_vec3<F>,
+    /// Angular velocity (rad/s).
+    pub angular_velocity: ss_vec3<F>,
+    /// Radius (m).
+    pub radius: F,
+    /// Mass (kg).
+    pub mass: F,
+}
+
+impl<F: Float> From<ss_sphere<F>> for Sphere<F> {
+    fn from(s: ss_sphere<F>) -> Self {
+        Sphere {
+            position: s.position.into(),
+            velocity: s.velocity.into(),
+            angular_velocity: s.angular_velocity.into(),
+            radius: s.radius,
+            mass: s.mass,
+        }
+    }
+}
+
+/// A plane wall through `point` with outward `normal` (any length), moving at `velocity`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_wall<F> {
+    /// A point on the plane (m).
+    pub point: ss_vec3<F>,
+    /// The side the spheres are on.
+    pub normal: ss_vec3<F>,
+    /// Wall velocity (m/s).
+    pub velocity: ss_vec3<F>,
+}
+
+/// Law parameters, validated once by the constructor.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_params<F> {
+    /// `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+    pub model: i32,
+    /// k_n (N/m).
+    pub normal_stiffness: F,
+    /// Normal restitution e, in [0, 1].
+    pub restitution: F,
+    /// k_t (N/m).
+    pub tangential_stiffness: F,
+    /// eta_t / eta_n.
+    pub damping_ratio: F,
+    /// Coulomb mu.
+    pub friction: F,
+    /// The time step (s) every call will use.
+    pub time_step: F,
+    /// The smallest effective mass of any contact the step is checked for (kg).
+    pub smallest_effective_mass: F,
+}
+
+/// Per-contact state, owned by the caller: zero for a new contact.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_state<F> {
+    /// Stored tangential displacement (m); unused by the stateless law.
+    pub displacement: ss_vec3<F>,
+}
+
+/// The result of one contact evaluation. Forces act on j (on the sphere, for a wall); i receives
+/// the negative.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_forces<F> {
+    /// 1 when touching; 0 when apart (then every other field is zero).
+    pub touching: i32,
+    /// 1 when the contact slid this step.
+    pub sliding: i32,
+    /// Overlap (m).
+    pub overlap: F,
+    /// Normal force magnitude (N), positive when repulsive.
+    pub normal_force: F,
+    /// Total contact force on j (N).
+    pub force_on_j: ss_vec3<F>,
+    /// Torque on i (N m).
+    pub torque_on_i: ss_vec3<F>,
+    /// Torque on j (N m).
+    pub torque_on_j: ss_vec3<F>,
+}
+
+/// A validated contact law and its checked time step (opaque to C).
+#[derive(Debug)]
+pub struct ss_law<F: Float> {
+    law: AnyLaw<F>,
+    time_step: TimeStep<F>,
+}
+
+fn build_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
+    let built = || -> Result<ss_law<F>, ParameterError> {
+        let normal = LinearSpringDashpot::new(p.normal_stiffness, p.restitution)?;
+        let tangential =
+            TangentialParameters::new(p.tangential_stiffness, p.damping_ratio, p.friction)?;
+        Ok(if p.model == SS_MODEL_STATELESS {
+            let law = ContactLaw::new(normal, Stateless(tangential));
+            let time_step = law.time_step(p.time_step, p.smallest_effective_mass)?;
+            ss_law {
+                law: AnyLaw::Stateless(law),
+                time_step,
+            }
+        } else {
+            let law = ContactLaw::new(normal, ModelAA(tangential));
+            let time_step = law.time_step(p.time_step, p.smallest_effective_mass)?;
+            ss_law {
+                law: AnyLaw::ModelAA(law),
+                time_step,
+            }
+        })
+    };
+    if p.model != SS_MODEL_STATELESS && p.model != SS_MODEL_AA {
+        return Err(SS_ERR_UNKNOWN_MODEL);
+    }
+    built().map_err(parameter_code)
+}
+
+/// # Safety
+/// As the exported constructors.
+unsafe fn law_new<F: Float>(params: *const ss_params<F>, out: *mut *mut ss_law<F>) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(p), false) = (unsafe { params.as_ref() }, out.is_null()) else {
+        return SS_ERR_NULL;
+    };
+    match build_law(p) {
+        Ok(law) => {
+            // SAFETY: out was checked non-null.
+            unsafe { *out = Box::into_raw(Box::new(law)) };
+            SS_OK
+        }
+        Err(code) => code,
+    }
+}
+
+/// # Safety
+/// As the exported destructors.
+unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
+    if !law.is_null() {
+        // SAFETY: the handle came from Box::into_raw in law_new.
+        drop(unsafe { Box::from_raw(law) });
+    }
+}
+
+fn write_out<F: Float>(
+    result: Result<Interaction<F>, ContactError>,
+    state: &mut ss_state<F>,
+    new_state: SpringDisplacement<F>,
+    out: &mut ss_forces<F>,
+) -> i32 {
+    match result {
+        Ok(interaction) => {
+            state.displacement = new_state.displacement.into();
+            *out = match interaction {
+                Interaction::Apart => ss_forces {
+                    touching: 0,
+                    sliding: 0,
+                    overlap: F::ZERO,
+                    normal_force: F::ZERO,
+                    force_on_j: Vec3::ZERO.into(),
+                    torque_on_i: Vec3::ZERO.into(),
+                    torque_on_j: Vec3::ZERO.into(),
+                },
+                Interaction::Touching(c) => ss_forces {
+                    touching: 1,
+                    sliding: i32::from(c.sliding),
+                    overlap: c.overlap,
+                    normal_force: c.normal_force,
+                    force_on_j: c.force_on_j().into(),
+                    torque_on_i: c.torque_on_i.into(),
+                    torque_on_j: c.torque_on_j.into(),
+                },
+            };
+            SS_OK
+        }
+        Err(e) => contact_code(e),
+    }
+}
+
+/// # Safety
+/// As the exported sphere-sphere calls.
+unsafe fn pair<F: Float>(
+    law: *const ss_law<F>,
+    i: *const ss_sphere<F>,
+    j: *const ss_sphere<F>,
+    state: *mut ss_state<F>,
+    out: *mut ss_forces<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(law), Some(i), Some(j), Some(state), Some(out)) = (unsafe {
+        (
+            law.as_ref(),
+            i.as_ref(),
+            j.as_ref(),
+            state.as_mut(),
+            out.as_mut(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let (i, j): (Sphere<F>, Sphere<F>) = ((*i).into(), (*j).into());
+    let mut spring = SpringDisplacement {
+        displacement: state.displacement.into(),
+    };
+    let result = match &law.law {
+        AnyLaw::Stateless(l) => l.sphere_sphere(&i, &j, &mut (), law.time_step),
+        AnyLaw::ModelAA(l) => l.sphere_sphere(&i, &j, &mut spring, law.time_step),
+    };
+    write_out(result, state, spring, out)
+}
+
+/// # Safety
+/// As the exported sphere-wall calls.
+unsafe fn on_wall<F: Float>(
+    law: *const ss_law<F>,
+    sphere: *const ss_sphere<F>,
+    wall: *const ss_wall<F>,
+    state: *mut ss_state<F>,
+    out: *mut ss_forces<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(law), Some(sphere), Some(wall), Some(state), Some(out)) = (unsafe {
+        (
+            law.as_ref(),
+            sphere.as_ref(),
+            wall.as_ref(),
+            state.as_mut(),
+            out.as_mut(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let Ok(plane) = Wall::new(wall.point.into(), wall.normal.into()) else {
+        return SS_ERR_BAD_WALL;
+    };
+    let plane = plane.with_velocity(wall.velocity.into());
+    let sphere: Sphere<F> = (*sphere).into();
+    let mut spring = SpringDisplacement {
+        displacement: state.displacement.into(),
+    };
+    let result = match &law.law {
+        AnyLaw::Stateless(l) => l.sphere_wall(&sphere, &plane, &mut (), law.time_step),
+        AnyLaw::ModelAA(l) => l.sphere_wall(&sphere, &plane, &mut spring, law.time_step),
+    };
+    // The kernel treats the sphere as body i against a wall: report its force as the one on j,
+    // so that `force_on_j` and `torque_on_j` are always what the sphere receives.
+    let result = result.map(|interaction| match interaction {
+        Interaction::Touching(mut c) => {
+            c.normal = -c.normal;
+            c.tangential_force = -c.tangential_force;
+            core::mem::swap(&mut c.torque_on_i, &mut c.torque_on_j);
+            Interaction::Touching(c)
+        }
+        apart => apart,
+    });
+    write_out(result, state, spring, out)
+}
+
+/// # Safety
+/// As the exported advance calls.
+unsafe fn advance<F: Float>(
+    law: *const ss_law<F>,
+    sphere: *mut ss_sphere<F>,
+    force: ss_vec3<F>,
+    torque: ss_vec3<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(law), Some(sphere)) = (unsafe { (law.as_ref(), sphere.as_mut()) }) else {
+        return SS_ERR_NULL;
+    };
+    let mut s: Sphere<F> = (*sphere).into();
+    advance_solid_sphere(&mut s, force.into(), torque.into(), law.time_step);
+    sphere.position = s.position.into();
+    sphere.velocity = s.velocity.into();
+    sphere.angular_velocity = s.angular_velocity.into();
+    SS_OK
+}
+
+/// # Safety
+/// As the exported duration calls.
+unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(p), Some(out)) = (unsafe { (params.as_ref(), out.as_mut()) }) else {
+        return SS_ERR_NULL;
+    };
+    if !(m_star > F::ZERO && m_star.is_finite()) {
+        return SS_ERR_NOT_POSITIVE;
+    }
+    match LinearSpringDashpot::new(p.normal_stiffness, p.restitution) {
+        Ok(normal) => {
+            *out = ContactLaw::new(normal, soft_sphere::Frictionless).contact_duration(m_star);
+            SS_OK
+        }
+        Err(e) => parameter_code(e),
+    }
+}
+
+// The exported functions are written out per precision (not generated by a macro) so that
+// cbindgen, which does not expand macros on stable, sees every one of them.
+/// Validates `*params` and writes a new law handle to `*out` (free it with the matching
+/// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
+///
+/// # Safety
+/// `params` and `out` must be valid pointers or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_law_new_f64(
+    params: *const ss_params<f64>,
+    out: *mut *mut ss_law<f64>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { law_new(params, out) }
+}
+
+/// Frees a law handle (null is ignored).
+///
+/// # Safety
+/// `law` must come from the matching constructor and not be used afterwards.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_law_free_f64(law: *mut ss_law<f64>) {
+    // SAFETY: forwarded contract.
+    unsafe { law_free(law) }
+}
+
+/// One sphere-sphere evaluation: reads and updates `*state`, writes `*out`. On error
+/// neither is changed.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_sphere_sphere_f64(
+    law: *const ss_law<f64>,
+    i: *const ss_sphere<f64>,
+    j: *const ss_sphere<f64>,
+    state: *mut ss_state<f64>,
+    out: *mut ss_forces<f64>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { pair(law, i, j, state, out) }
+}
+
+/// One sphere-wall evaluation; `force_on_j` and `torque_on_j` are what the sphere
+/// receives. On error neither `*state` nor `*out` is changed.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_sphere_wall_f64(
+    law: *const ss_law<f64>,
+    sphere: *const ss_sphere<f64>,
+    wall: *const ss_wall<f64>,
+    state: *mut ss_state<f64>,
+    out: *mut ss_forces<f64>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { on_wall(law, sphere, wall, state, out) }
+}
+
+/// Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
+/// Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_advance_sphere_f64(
+    law: *const ss_law<f64>,
+    sphere: *mut ss_sphere<f64>,
+    force: ss_vec3<f64>,
+    torque: ss_vec3<f64>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { advance(law, sphere, force, torque) }
+}
+
+/// Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
+/// (infinite at e = 0). `*out` is untouched on error.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_contact_duration_f64(
+    params: *const ss_params<f64>,
+    m_star: f64,
+    out: *mut f64,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { duration(params, m_star, out) }
+}
+
+/// Validates `*params` and writes a new law handle to `*out` (free it with the matching
+/// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
+///
+/// # Safety
+/// `params` and `out` must be valid pointers or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_law_new_f32(
+    params: *const ss_params<f32>,
+    out: *mut *mut ss_law<f32>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { law_new(params, out) }
+}
+
+/// Frees a law handle (null is ignored).
+///
+/// # Safety
+/// `law` must come from the matching constructor and not be used afterwards.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_law_free_f32(law: *mut ss_law<f32>) {
+    // SAFETY: forwarded contract.
+    unsafe { law_free(law) }
+}
+
+/// One sphere-sphere evaluation: reads and updates `*state`, writes `*out`. On error
+/// neither is changed.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_sphere_sphere_f32(
+    law: *const ss_law<f32>,
+    i: *const ss_sphere<f32>,
+    j: *const ss_sphere<f32>,
+    state: *mut ss_state<f32>,
+    out: *mut ss_forces<f32>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { pair(law, i, j, state, out) }
+}
+
+/// One sphere-wall evaluation; `force_on_j` and `torque_on_j` are what the sphere
+/// receives. On error neither `*state` nor `*out` is changed.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_sphere_wall_f32(
+    law: *const ss_law<f32>,
+    sphere: *const ss_sphere<f32>,
+    wall: *const ss_wall<f32>,
+    state: *mut ss_state<f32>,
+    out: *mut ss_forces<f32>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { on_wall(law, sphere, wall, state, out) }
+}
+
+/// Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
+/// Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_advance_sphere_f32(
+    law: *const ss_law<f32>,
+    sphere: *mut ss_sphere<f32>,
+    force: ss_vec3<f32>,
+    torque: ss_vec3<f32>,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { advance(law, sphere, force, torque) }
+}
+
+/// Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
+/// (infinite at e = 0). `*out` is untouched on error.
+///
+/// # Safety
+/// All pointers must be valid or null.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_contact_duration_f32(
+    params: *const ss_params<f32>,
+    m_star: f32,
+    out: *mut f32,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    unsafe { duration(params, m_star, out) }
+}
