@@ -158,6 +158,22 @@ impl<M: MathBackend<f32>> BoxScene<M> {
         Ok(())
     }
 
+    /// A 64-bit FNV-1a hash of every position, velocity and angular velocity bit: equal
+    /// fingerprints mean bit-identical states (used to compare a Cortex-M run with the host's).
+    pub fn fingerprint(&self) -> u64 {
+        let mut hash = 0xcbf2_9ce4_8422_2325u64;
+        for s in &self.spheres {
+            for v in [s.position, s.velocity, s.angular_velocity] {
+                for x in v.to_array() {
+                    for byte in x.to_bits().to_le_bytes() {
+                        hash = (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+                    }
+                }
+            }
+        }
+        hash
+    }
+
     /// Energies now.
     pub fn summary(&self) -> Summary {
         let mut kinetic_energy = 0.0;
