@@ -6,5 +6,6 @@ pub mod analytic;
 pub mod data;
 pub mod impact;
 pub mod plot;
+pub mod scene;
 pub mod strategies;
 pub mod validation;

@@ -132,6 +132,7 @@ mod law;
 pub mod motion;
 mod normal;
 mod rotation;
+pub mod scene;
 mod store;
 pub mod tangential;
 mod time_step;
@@ -143,7 +144,7 @@ pub use error::{ContactError, Parameter, ParameterError};
 pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
-pub use normal::{LinearSpringDashpot, NormalModel, NormalOscillator};
+pub use normal::{LinearSpring, LinearSpringDashpot, NormalModel, NormalOscillator};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use store::{ContactHistory, ContactKey};
 pub use tangential::{

@@ -174,3 +174,54 @@ pub(crate) fn damped_critical_step<F: Float>(frequency: F, damping_ratio: F) -> 
     let root = F::DefaultBackend::sqrt(F::ONE + damping_ratio * damping_ratio);
     F::TWO / frequency * (root - damping_ratio)
 }
+
+/// Linear spring without a dashpot, `F_n = k_n delta`: restitution 1, for scenes that need no
+/// normal damping (the dashpot's velocity term is not computed).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LinearSpring<F> {
+    stiffness: F,
+}
+
+impl<F: Float> LinearSpring<F> {
+    /// A spring of stiffness `k_n` (N/m).
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] or [`ParameterError::NotPositive`] for the stiffness.
+    pub fn new(stiffness: F) -> Result<Self, ParameterError> {
+        Ok(Self {
+            stiffness: positive(stiffness, Parameter::NormalStiffness)?,
+        })
+    }
+}
+
+impl<F: Float> NormalModel<F> for LinearSpring<F> {
+    #[inline(always)]
+    fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F> {
+        let natural_frequency = M::sqrt(self.stiffness / effective_mass);
+        NormalOscillator {
+            natural_frequency,
+            damping_coefficient: F::ZERO,
+            decay_rate: F::ZERO,
+            damped_frequency: natural_frequency,
+        }
+    }
+
+    #[inline(always)]
+    fn force(&self, overlap: F, _: F, _: &NormalOscillator<F>) -> F {
+        self.stiffness * overlap
+    }
+
+    fn contact_duration(&self, effective_mass: F) -> F {
+        F::PI
+            / self
+                .oscillator::<F::DefaultBackend>(effective_mass)
+                .natural_frequency
+    }
+
+    fn critical_time_step(&self, effective_mass: F) -> F {
+        F::TWO
+            / self
+                .oscillator::<F::DefaultBackend>(effective_mass)
+                .natural_frequency
+    }
+}

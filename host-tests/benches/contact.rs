@@ -1,0 +1,149 @@
+//! Per-contact cost: one contact evaluation (hot cache, a batch of 1024 independent touching
+//! pairs) for every tangential law x f32/f64 x math backend, and the slots a scene can switch
+//! off (friction, rotation, damping). Also prints the per-contact state size.
+//!
+//! Run: `cargo bench -p host-tests --bench contact` (add `-- --quick` for a fast pass).
+
+use std::hint::black_box;
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use soft_sphere::{
+    ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring, LinearSpringDashpot,
+    MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere,
+    Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, effective_mass,
+};
+
+const BATCH: usize = 1024;
+
+/// Touching pairs of 1 mm spheres at overlaps up to 1 % of the radius, random directions,
+/// velocities and spins (fixed seed).
+fn pairs<F: Float>() -> Vec<(Sphere<F>, Sphere<F>)> {
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    (0..BATCH)
+        .map(|_| {
+            let r = 5e-4;
+            let direction = [next(), next(), next()];
+            let length = (direction.iter().map(|x| x * x).sum::<f64>())
+                .sqrt()
+                .max(1e-3);
+            let distance = 2.0 * r * (1.0 - 0.005 * (1.0 + next()));
+            let f = F::from_f64;
+            let v = |a: [f64; 3], s: f64| Vec3::new(f(a[0] * s), f(a[1] * s), f(a[2] * s));
+            let i = Sphere::solid(Vec3::ZERO, f(r), f(2500.0));
+            let mut j = Sphere::solid(v(direction, distance / length), f(r), f(2500.0));
+            j.velocity = v([next(), next(), next()], 0.1);
+            j.angular_velocity = v([next(), next(), next()], 100.0);
+            (i, j)
+        })
+        .collect()
+}
+
+fn bench_law<F: Float, N: NormalModel<F>, T: TangentialModel<F>, M: MathBackend<F>, R: Rotation>(
+    c: &mut Criterion,
+    name: &str,
+    law: ContactLaw<F, N, T, M, R>,
+) {
+    let pairs = pairs::<F>();
+    let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
+    let dt: TimeStep<F> = law.time_step(law.recommended_time_step(m), m).unwrap();
+    let mut states = [T::State::default(); BATCH];
+    let mut group = c.benchmark_group("contact");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            let mut sum = F::ZERO;
+            for ((i, j), state) in pairs.iter().zip(states.iter_mut()) {
+                if let Ok(Interaction::Touching(f)) = law.sphere_sphere(i, j, state, dt) {
+                    sum += f.normal_force;
+                }
+            }
+            black_box(sum)
+        });
+    });
+    group.finish();
+}
+
+macro_rules! every_law {
+    ($c:expr, $F:ty, $M:ty, $label:expr) => {{
+        let normal = LinearSpringDashpot::new(1000.0 as $F, 0.9 as $F).unwrap();
+        let p = TangentialParameters::new(285.7 as $F, 0.5 as $F, 0.5 as $F).unwrap();
+        let with = |name: &str| format!("{name}/{}", $label);
+        bench_law(
+            $c,
+            &with("frictionless"),
+            ContactLaw::new(normal, Frictionless).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("stateless"),
+            ContactLaw::new(normal, Stateless(p)).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("model_c"),
+            ContactLaw::new(normal, ModelC(p)).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("model_a"),
+            ContactLaw::new(normal, ModelA(p)).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("model_b"),
+            ContactLaw::new(normal, ModelB(p)).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("model_aa"),
+            ContactLaw::new(normal, ModelAA(p)).with_backend::<$M>(),
+        );
+    }};
+}
+
+fn laws(c: &mut Criterion) {
+    every_law!(c, f64, Libm, "f64_libm");
+    every_law!(c, f32, Libm, "f32_libm");
+    every_law!(c, f32, Micromath, "f32_micromath");
+}
+
+fn skipping(c: &mut Criterion) {
+    let normal = LinearSpringDashpot::new(1000.0f64, 0.9).unwrap();
+    let p = TangentialParameters::new(285.7f64, 0.5, 0.5).unwrap();
+    bench_law(
+        c,
+        "skip/full_model_aa_f64",
+        ContactLaw::new(normal, ModelAA(p)),
+    );
+    bench_law(
+        c,
+        "skip/non_rotating_model_aa_f64",
+        ContactLaw::new(normal, ModelAA(p)).without_rotation(),
+    );
+    bench_law(
+        c,
+        "skip/frictionless_non_rotating_f64",
+        ContactLaw::new(normal, Frictionless).without_rotation(),
+    );
+    let undamped = TangentialParameters::new(285.7f64, 0.0, 0.5).unwrap();
+    bench_law(
+        c,
+        "skip/undamped_model_aa_f64",
+        ContactLaw::new(LinearSpring::new(1000.0f64).unwrap(), ModelAA(undamped)),
+    );
+    println!(
+        "per-contact state: Model A/B/AA {} bytes (f64), {} bytes (f32); stateless, C, frictionless {} bytes",
+        size_of::<<ModelAA<f64> as TangentialModel<f64>>::State>(),
+        size_of::<<ModelAA<f32> as TangentialModel<f32>>::State>(),
+        size_of::<<Stateless<f64> as TangentialModel<f64>>::State>(),
+    );
+}
+
+criterion_group!(benches, laws, skipping);
+criterion_main!(benches);

@@ -1,0 +1,367 @@
+//! The reference scene of issue 5, timed: a settled column of spheres on a floor, periodic in x
+//! and y, stepped 10,000 times at dt = 2e-6 s (k_n = 1000 N/m, k_t = 2/7 k_n, e = 0.9, eta_t =
+//! eta_n / 2, mu = 0.5, Model AA, f64), one thread. Prints the loop time (min/median/max over
+//! repeats), particle-steps per second, and the physics at the end (kinetic energy, contacts per
+//! particle, mean overlap). Writes the settled packing and a LAMMPS deck for the same physics with
+//! `--lammps DIR`.
+//!
+//! Usage: `cargo run --release -p host-tests --bin scene_bench -- [--spheres 10000|50000]
+//! [--steps 10000] [--repeat 3] [--integrator euler|verlet] [--variant full|frictionless|
+//! non-rotating|undamped|no-walls] [--lammps DIR]`
+
+use std::error::Error;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use host_tests::scene::{
+    Column, OwnedScene, positions_csv, wall_restitution_for_same_dashpot, write_lammps_data,
+};
+use soft_sphere::scene::{Integrator, NoWalls, StepInput, WallSet};
+use soft_sphere::{
+    ContactLaw, Frictionless, LinearSpring, LinearSpringDashpot, MathBackend, ModelAA, NormalModel,
+    Rotation, Sphere, TangentialModel, TangentialParameters, Vec3, Wall,
+};
+
+const NORMAL_STIFFNESS: f64 = 1000.0;
+const RESTITUTION: f64 = 0.9;
+const FRICTION: f64 = 0.5;
+const DAMPING_RATIO: f64 = 0.5;
+const TIME_STEP: f64 = 2e-6;
+const GRAVITY: f64 = 9.81;
+/// Verlet-list skin, the same as LAMMPS's `neighbor 1e-4 bin`.
+const SKIN: f64 = 1e-4;
+
+struct Options {
+    column: Column,
+    steps: usize,
+    repeat: usize,
+    integrator: Integrator,
+    variant: String,
+    lammps: Option<PathBuf>,
+}
+
+fn options() -> Result<Options, Box<dyn Error>> {
+    let mut o = Options {
+        column: Column::REFERENCE,
+        steps: 10_000,
+        repeat: 3,
+        integrator: Integrator::SymplecticEuler,
+        variant: "full".into(),
+        lammps: None,
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        let mut value = || args.next().ok_or(format!("{arg} needs a value"));
+        match arg.as_str() {
+            "--spheres" => {
+                o.column = match value()?.as_str() {
+                    "10000" => Column::REFERENCE,
+                    "50000" => Column::LONG,
+                    other => return Err(format!("--spheres {other}: 10000 or 50000").into()),
+                }
+            }
+            "--steps" => o.steps = value()?.parse()?,
+            "--repeat" => o.repeat = value()?.parse::<usize>()?.max(1),
+            "--integrator" => {
+                o.integrator = match value()?.as_str() {
+                    "euler" => Integrator::SymplecticEuler,
+                    "verlet" => Integrator::VelocityVerlet,
+                    other => return Err(format!("--integrator {other}: euler or verlet").into()),
+                }
+            }
+            "--variant" => o.variant = value()?,
+            "--lammps" => o.lammps = Some(value()?.into()),
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    Ok(o)
+}
+
+fn tangential() -> TangentialParameters<f64> {
+    TangentialParameters::new(2.0 / 7.0 * NORMAL_STIFFNESS, DAMPING_RATIO, FRICTION).unwrap()
+}
+
+fn floor() -> [Wall<f64>; 1] {
+    [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()]
+}
+
+/// Pours the column from its lattice and lets it settle (more damping, a longer step), then
+/// stops every sphere. Cached in `target/scene/`.
+/// Spheres and the height of the box they were poured into.
+type Packing = (Vec<Sphere<f64>>, f64);
+/// The pair law and the wall law of one variant.
+type LawPair<N, T, R> = (
+    ContactLaw<f64, N, T, soft_sphere::Libm, R>,
+    ContactLaw<f64, N, T, soft_sphere::Libm, R>,
+);
+
+fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
+    let cache = PathBuf::from(format!("target/scene/packing_{}.csv", column.spheres));
+    let (lattice, height) = column.lattice::<f64>();
+    if let Ok(text) = std::fs::read_to_string(&cache) {
+        let mut spheres = lattice.clone();
+        for (s, line) in spheres.iter_mut().zip(text.lines().skip(1)) {
+            let v: Vec<f64> = line.split(',').map(str::parse).collect::<Result<_, _>>()?;
+            s.position = Vec3::new(v[0], v[1], v[2]);
+        }
+        return Ok((spheres, height));
+    }
+    eprintln!(
+        "settling {} spheres (cached afterwards in {})",
+        column.spheres,
+        cache.display()
+    );
+    let mut scene =
+        OwnedScene::<f64, _>::new(lattice, column.domain(height), (column.diameter, SKIN), 1)?;
+    let mass = scene.spheres[0].mass;
+    let settle_e = 0.3;
+    let law = ContactLaw::new(
+        LinearSpringDashpot::new(NORMAL_STIFFNESS, settle_e)?,
+        ModelAA(tangential()),
+    );
+    let wall_e = wall_restitution_for_same_dashpot(settle_e, mass / 2.0, mass);
+    let wall_law = ContactLaw::new(
+        LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?,
+        ModelAA(tangential()),
+    );
+    let walls = floor();
+    let input = StepInput {
+        law: &law,
+        wall_law: &wall_law,
+        walls: &walls,
+        gravity: Vec3::new(0.0, 0.0, -GRAVITY),
+        time_step: law.time_step(4e-6, mass / 2.0)?,
+        integrator: Integrator::SymplecticEuler,
+    };
+    for round in 0..40 {
+        scene.run(&input, 2500, |_, _| {})?;
+        let ke = scene.kinetic_energy();
+        eprintln!("  settle round {round}: kinetic energy {ke:.3e} J");
+        if round >= 8 && ke < 1e-9 {
+            break;
+        }
+    }
+    scene.stop();
+    std::fs::create_dir_all(cache.parent().unwrap())?;
+    std::fs::write(&cache, positions_csv(&scene.spheres))?;
+    Ok((scene.spheres, height))
+}
+
+struct Measured {
+    seconds: Vec<f64>,
+    kinetic_energy: f64,
+    contacts_per_particle: f64,
+    mean_overlap: f64,
+}
+
+fn time_runs<N, T, M, R, W>(
+    o: &Options,
+    spheres: &[Sphere<f64>],
+    height: f64,
+    input: &StepInput<'_, f64, N, T, M, R, W>,
+) -> Result<Measured, Box<dyn Error>>
+where
+    N: NormalModel<f64>,
+    T: TangentialModel<f64>,
+    M: MathBackend<f64>,
+    R: Rotation,
+    W: WallSet<f64>,
+{
+    let mut seconds = Vec::new();
+    let mut last = (0.0, 0.0, 0.0);
+    for _ in 0..o.repeat {
+        let mut scene = OwnedScene::<f64, T::State>::new(
+            spheres.to_vec(),
+            o.column.domain(height),
+            (o.column.diameter, SKIN),
+            W::COUNT,
+        )?;
+        let mut stats = Default::default();
+        let start = Instant::now();
+        scene.run(input, o.steps, |_, s| stats = *s)?;
+        seconds.push(start.elapsed().as_secs_f64());
+        eprintln!(
+            "  run: {:.3} s, {} list builds",
+            seconds[seconds.len() - 1],
+            scene.list_builds
+        );
+        let n = spheres.len() as f64;
+        last = (
+            scene.kinetic_energy(),
+            2.0 * stats.pair_contacts as f64 / n,
+            if stats.pair_contacts > 0 {
+                stats.overlap_sum / stats.pair_contacts as f64
+            } else {
+                0.0
+            },
+        );
+    }
+    seconds.sort_by(f64::total_cmp);
+    Ok(Measured {
+        seconds,
+        kinetic_energy: last.0,
+        contacts_per_particle: last.1,
+        mean_overlap: last.2,
+    })
+}
+
+fn run_variant<N: NormalModel<f64>, T: TangentialModel<f64>, R: Rotation, W: WallSet<f64>>(
+    o: &Options,
+    spheres: &[Sphere<f64>],
+    height: f64,
+    laws: LawPair<N, T, R>,
+    walls: &W,
+) -> Result<Measured, Box<dyn Error>> {
+    let mass = spheres[0].mass;
+    let input = StepInput {
+        law: &laws.0,
+        wall_law: &laws.1,
+        walls,
+        gravity: Vec3::new(0.0, 0.0, -GRAVITY),
+        time_step: laws.0.time_step(TIME_STEP, mass / 2.0)?,
+        integrator: o.integrator,
+    };
+    time_runs(o, spheres, height, &input)
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let o = options()?;
+    let (spheres, _) = settled(&o.column)?;
+    // The timed box ends two diameters above the settled bed: no empty cells to walk.
+    let height = spheres.iter().map(|s| s.position.z).fold(0.0, f64::max) + 2.0 * o.column.diameter;
+    let mass = spheres[0].mass;
+    let wall_e = wall_restitution_for_same_dashpot(RESTITUTION, mass / 2.0, mass);
+    if let Some(dir) = &o.lammps {
+        std::fs::create_dir_all(dir)?;
+        let domain = o.column.domain::<f64>(height);
+        write_lammps_data(
+            &dir.join("packing.data"),
+            &spheres,
+            &domain,
+            o.column.density,
+        )?;
+        std::fs::write(dir.join("in.scene"), lammps_deck(mass, o.steps))?;
+        eprintln!("wrote {}/packing.data and in.scene", dir.display());
+    }
+    let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION)?;
+    let wall_normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?;
+    let m = match o.variant.as_str() {
+        "full" => run_variant(
+            &o,
+            &spheres,
+            height,
+            (
+                ContactLaw::new(normal, ModelAA(tangential())),
+                ContactLaw::new(wall_normal, ModelAA(tangential())),
+            ),
+            &floor(),
+        )?,
+        "frictionless" => run_variant(
+            &o,
+            &spheres,
+            height,
+            (
+                ContactLaw::new(normal, Frictionless).without_rotation(),
+                ContactLaw::new(wall_normal, Frictionless).without_rotation(),
+            ),
+            &floor(),
+        )?,
+        "non-rotating" => run_variant(
+            &o,
+            &spheres,
+            height,
+            (
+                ContactLaw::new(normal, ModelAA(tangential())).without_rotation(),
+                ContactLaw::new(wall_normal, ModelAA(tangential())).without_rotation(),
+            ),
+            &floor(),
+        )?,
+        "undamped" => {
+            let spring = LinearSpring::new(NORMAL_STIFFNESS)?;
+            let t = TangentialParameters::new(2.0 / 7.0 * NORMAL_STIFFNESS, 0.0, FRICTION)?;
+            run_variant(
+                &o,
+                &spheres,
+                height,
+                (
+                    ContactLaw::new(spring, ModelAA(t)),
+                    ContactLaw::new(spring, ModelAA(t)),
+                ),
+                &floor(),
+            )?
+        }
+        "no-walls" => run_variant(
+            &o,
+            &spheres,
+            height,
+            (
+                ContactLaw::new(normal, ModelAA(tangential())),
+                ContactLaw::new(wall_normal, ModelAA(tangential())),
+            ),
+            &NoWalls,
+        )?,
+        other => return Err(format!("unknown variant {other}").into()),
+    };
+    let n = spheres.len() as f64;
+    let median = m.seconds[m.seconds.len() / 2];
+    let particle_steps = n * o.steps as f64;
+    println!(
+        "soft-sphere {} spheres, {} steps, variant {}, {:?}: loop time min {:.3} s median {:.3} s max {:.3} s",
+        spheres.len(),
+        o.steps,
+        o.variant,
+        o.integrator,
+        m.seconds[0],
+        median,
+        m.seconds[m.seconds.len() - 1]
+    );
+    println!(
+        "  {:.3e} particle-steps/s (median), {:.1} ns per particle-step",
+        particle_steps / median,
+        1e9 * median / particle_steps
+    );
+    println!(
+        "  end: kinetic energy {:.6e} J, contacts per particle {:.4}, mean overlap {:.6e} m",
+        m.kinetic_energy, m.contacts_per_particle, m.mean_overlap
+    );
+    Ok(())
+}
+
+/// The same physics for LAMMPS: `gran/hooke/history` with `gamma_n` chosen so that the pair
+/// dashpot `m* gamma_n` equals the kernel's `eta_n` at e = 0.9, and the floor's `gamma_n` halved so
+/// that `m gamma_n` is the same `eta_n` (the issue's "same eta_n for the floor").
+fn lammps_deck(mass: f64, steps: usize) -> String {
+    let pair_mass = mass / 2.0;
+    let l = RESTITUTION.ln();
+    let zeta = -l / (std::f64::consts::PI.powi(2) + l * l).sqrt();
+    let eta_n = 2.0 * zeta * (pair_mass * NORMAL_STIFFNESS).sqrt();
+    let gamma_n = eta_n / pair_mass;
+    let gamma_t = DAMPING_RATIO * gamma_n;
+    let k_t = 2.0 / 7.0 * NORMAL_STIFFNESS;
+    format!(
+        "# Generated by host-tests/src/bin/scene_bench.rs: the soft-sphere reference scene.\n\
+         units si\n\
+         atom_style sphere\n\
+         boundary p p f\n\
+         newton off\n\
+         comm_modify vel yes\n\
+         read_data packing.data\n\
+         pair_style gran/hooke/history {NORMAL_STIFFNESS} {k_t} {gamma_n} {gamma_t} {FRICTION} 1\n\
+         pair_coeff * *\n\
+         neighbor 1e-4 bin\n\
+         neigh_modify every 1 delay 0 check yes\n\
+         fix integrate all nve/sphere\n\
+         fix weight all gravity {GRAVITY} vector 0 0 -1\n\
+         fix floor all wall/gran hooke/history {NORMAL_STIFFNESS} {k_t} {gw} {gtw} {FRICTION} 1 zplane 0.0 NULL\n\
+         timestep {TIME_STEP}\n\
+         compute rotational all erotate/sphere\n\
+         compute contacts all contact/atom\n\
+         compute total_contacts all reduce sum c_contacts\n\
+         thermo_style custom step ke c_rotational c_total_contacts\n\
+         thermo_modify format float %.10e\n\
+         thermo {steps}\n\
+         run {steps}\n",
+        gw = gamma_n / 2.0,
+        gtw = gamma_t / 2.0,
+    )
+}

@@ -1,0 +1,305 @@
+//! The std wrapper around the kernel's allocation-free scene: owns the buffers, builds the
+//! reference packing (REFERENCE-style column of spheres on a floor), and writes it for LAMMPS.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use soft_sphere::scene::{
+    Candidate, ContactSlots, Domain, Scene, SceneBuffers, SceneError, StepInput, StepStats, WallSet,
+};
+use soft_sphere::{
+    ContactError, ContactLaw, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
+    Vec3,
+};
+
+/// Contacts a sphere can own (monodisperse packings have at most 12 neighbours).
+pub const SLOTS: usize = 16;
+
+/// A scene and all its buffers.
+#[derive(Clone, Debug)]
+pub struct OwnedScene<F: Float, S> {
+    /// The spheres.
+    pub spheres: Vec<Sphere<F>>,
+    forces: Vec<Vec3<F>>,
+    torques: Vec<Vec3<F>>,
+    slots: Vec<ContactSlots<S, SLOTS>>,
+    next_slots: Vec<ContactSlots<S, SLOTS>>,
+    wall_states: Vec<S>,
+    walls: usize,
+    cell_start: Vec<u32>,
+    cell_entries: Vec<u32>,
+    candidates: Vec<Candidate>,
+    anchors: Vec<Vec3<F>>,
+    /// The box.
+    pub domain: Domain<F>,
+    largest_diameter: F,
+    skin: F,
+    /// Verlet-list builds of the last run.
+    pub list_builds: usize,
+}
+
+impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
+    /// A scene of `spheres` in `domain` with `walls` walls, a Verlet list with `skin`, and
+    /// spheres no larger than `largest_diameter`. The spheres are reordered along the cell grid
+    /// (z, then y, then x) so that neighbours sit close in memory, as LAMMPS's atom sort does.
+    ///
+    /// # Errors
+    /// The kernel's [`SceneError`].
+    pub fn new(
+        mut spheres: Vec<Sphere<F>>,
+        domain: Domain<F>,
+        (largest_diameter, skin): (F, F),
+        walls: usize,
+    ) -> Result<Self, SceneError> {
+        let n = spheres.len();
+        let cells = Scene::<F, S, SLOTS>::cells_needed(&domain, (largest_diameter, skin))?;
+        let cell = (largest_diameter + skin).to_f64();
+        let key = |s: &Sphere<F>| {
+            let p = (s.position - domain.lower)
+                .to_array()
+                .map(|x| (x.to_f64() / cell) as i64);
+            (p[2], p[1], p[0])
+        };
+        spheres.sort_by_key(key);
+        Ok(Self {
+            spheres,
+            forces: vec![Vec3::ZERO; n],
+            torques: vec![Vec3::ZERO; n],
+            slots: vec![ContactSlots::default(); n],
+            next_slots: vec![ContactSlots::default(); n],
+            wall_states: vec![S::default(); n * walls],
+            walls,
+            cell_start: vec![0; cells + 1],
+            cell_entries: vec![0; n],
+            candidates: vec![Candidate::default(); 8 * n + 64],
+            anchors: vec![Vec3::ZERO; n],
+            domain,
+            largest_diameter,
+            skin,
+            list_builds: 0,
+        })
+    }
+
+    /// Runs `steps` steps, calling `each` with every step's totals.
+    ///
+    /// # Errors
+    /// The first contact error; [`ContactError::HistoryFull`] past [`SLOTS`] contacts.
+    pub fn run<N, T, M, R, W>(
+        &mut self,
+        input: &StepInput<'_, F, N, T, M, R, W>,
+        steps: usize,
+        mut each: impl FnMut(usize, &StepStats<F>),
+    ) -> Result<(), ContactError>
+    where
+        N: NormalModel<F>,
+        T: TangentialModel<F, State = S>,
+        M: MathBackend<F>,
+        R: Rotation,
+        W: WallSet<F>,
+    {
+        let buffers = SceneBuffers {
+            forces: &mut self.forces,
+            torques: &mut self.torques,
+            slots: &mut self.slots,
+            next_slots: &mut self.next_slots,
+            wall_states: &mut self.wall_states,
+            cell_start: &mut self.cell_start,
+            cell_entries: &mut self.cell_entries,
+            candidates: &mut self.candidates,
+            anchors: &mut self.anchors,
+        };
+        let mut scene = Scene::new(
+            self.domain,
+            (self.largest_diameter, self.skin),
+            &mut self.spheres,
+            buffers,
+            self.walls,
+        )
+        .expect("buffers sized by OwnedScene::new");
+        for step in 0..steps {
+            let stats = scene.step(input)?;
+            each(step, &stats);
+        }
+        self.list_builds = scene.list_builds();
+        Ok(())
+    }
+
+    /// Sets every velocity and spin to zero (keeps the contacts' stored springs).
+    pub fn stop(&mut self) {
+        for s in &mut self.spheres {
+            s.velocity = Vec3::ZERO;
+            s.angular_velocity = Vec3::ZERO;
+        }
+    }
+
+    /// Translational plus rotational kinetic energy (J).
+    pub fn kinetic_energy(&self) -> f64 {
+        self.spheres
+            .iter()
+            .map(|s| {
+                0.5 * s.mass.to_f64() * s.velocity.norm_squared().to_f64()
+                    + 0.5
+                        * s.solid_moment_of_inertia().to_f64()
+                        * s.angular_velocity.norm_squared().to_f64()
+            })
+            .sum()
+    }
+}
+
+/// The reference scene of issue 5: monodisperse spheres in a column periodic in x and y on a
+/// floor at z = 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Column {
+    /// Number of spheres.
+    pub spheres: usize,
+    /// Sphere diameter (m).
+    pub diameter: f64,
+    /// Density (kg/m3).
+    pub density: f64,
+    /// Column width in x (m).
+    pub width_x: f64,
+    /// Column width in y (m).
+    pub width_y: f64,
+}
+
+impl Column {
+    /// 10,000 spheres of 1 mm, density 2500, 20 mm x 20 mm.
+    pub const REFERENCE: Self = Self {
+        spheres: 10_000,
+        diameter: 1e-3,
+        density: 2500.0,
+        width_x: 0.02,
+        width_y: 0.02,
+    };
+
+    /// The same column 5 times longer in x: 50,000 spheres.
+    pub const LONG: Self = Self {
+        spheres: 50_000,
+        diameter: 1e-3,
+        density: 2500.0,
+        width_x: 0.1,
+        width_y: 0.02,
+    };
+
+    /// The box: periodic x and y, from the floor up to a height that holds the pour.
+    pub fn domain<F: Float>(&self, height: f64) -> Domain<F> {
+        Domain {
+            lower: Vec3::ZERO,
+            upper: Vec3::new(
+                F::from_f64(self.width_x),
+                F::from_f64(self.width_y),
+                F::from_f64(height),
+            ),
+            periodic_x: true,
+            periodic_y: true,
+        }
+    }
+
+    /// Spheres on a jittered cubic lattice of spacing 1.2 diameters above the floor, at rest.
+    /// The jitter is a fixed-seed generator, so the pour is the same every time.
+    pub fn lattice<F: Float>(&self) -> (Vec<Sphere<F>>, f64) {
+        let spacing = 1.2 * self.diameter;
+        let (nx, ny) = (
+            (self.width_x / spacing).floor() as usize,
+            (self.width_y / spacing).floor() as usize,
+        );
+        let mut random = 0x2545_f491_4f6c_dd1du64;
+        let mut jitter = || {
+            // xorshift64*: enough for a deterministic jitter.
+            random ^= random >> 12;
+            random ^= random << 25;
+            random ^= random >> 27;
+            let unit =
+                (random.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
+            (unit - 0.5) * 0.1 * self.diameter
+        };
+        let mut spheres = Vec::with_capacity(self.spheres);
+        let radius = 0.5 * self.diameter;
+        let mut k = 0;
+        while spheres.len() < self.spheres {
+            let (ix, iy, iz) = (k % nx, (k / nx) % ny, k / (nx * ny));
+            let centre = Vec3::new(
+                F::from_f64((ix as f64 + 0.5) * self.width_x / nx as f64 + jitter()),
+                F::from_f64((iy as f64 + 0.5) * self.width_y / ny as f64 + jitter()),
+                F::from_f64(radius + iz as f64 * spacing + 0.2 * self.diameter + jitter().abs()),
+            );
+            spheres.push(Sphere::solid(
+                centre,
+                F::from_f64(radius),
+                F::from_f64(self.density),
+            ));
+            k += 1;
+        }
+        let top = spheres
+            .iter()
+            .map(|s| s.position.z.to_f64())
+            .fold(0.0, f64::max);
+        (spheres, top + self.diameter)
+    }
+}
+
+/// Writes spheres as a LAMMPS data file (`atom_style sphere`: id type diameter density x y z).
+///
+/// # Errors
+/// The file system's.
+pub fn write_lammps_data<F: Float>(
+    path: &Path,
+    spheres: &[Sphere<F>],
+    domain: &Domain<F>,
+    density: f64,
+) -> std::io::Result<()> {
+    let mut text = String::new();
+    let (lo, hi) = (domain.lower, domain.upper);
+    let _ = writeln!(
+        text,
+        "soft-sphere settled packing\n\n{} atoms\n1 atom types\n",
+        spheres.len()
+    );
+    let _ = writeln!(text, "{:e} {:e} xlo xhi", lo.x.to_f64(), hi.x.to_f64());
+    let _ = writeln!(text, "{:e} {:e} ylo yhi", lo.y.to_f64(), hi.y.to_f64());
+    let _ = writeln!(text, "{:e} {:e} zlo zhi\n", lo.z.to_f64(), hi.z.to_f64());
+    let _ = writeln!(text, "Atoms # sphere\n");
+    for (k, s) in spheres.iter().enumerate() {
+        let p = s.position;
+        let _ = writeln!(
+            text,
+            "{} 1 {:e} {:e} {:e} {:e} {:e}",
+            k + 1,
+            2.0 * s.radius.to_f64(),
+            density,
+            p.x.to_f64(),
+            p.y.to_f64(),
+            p.z.to_f64()
+        );
+    }
+    std::fs::write(path, text)
+}
+
+/// `(x, y, z)` of every sphere as CSV text, full precision.
+pub fn positions_csv<F: Float>(spheres: &[Sphere<F>]) -> String {
+    let mut text = String::from("x,y,z\n");
+    for s in spheres {
+        let p = s.position;
+        let _ = writeln!(
+            text,
+            "{:e},{:e},{:e}",
+            p.x.to_f64(),
+            p.y.to_f64(),
+            p.z.to_f64()
+        );
+    }
+    text
+}
+
+/// A law's sphere-sphere and sphere-wall variants for one scene.
+pub type Laws<F, N, T> = (ContactLaw<F, N, T>, ContactLaw<F, N, T>);
+
+/// Restitution a wall contact needs for the same dashpot `eta_n` as a pair contact with
+/// restitution `e` (LAMMPS's `gamma_n` multiplies the effective mass, which is `m` at a wall and
+/// `m/2` between equal spheres): `zeta_wall = zeta sqrt(m*_pair / m_wall)`.
+pub fn wall_restitution_for_same_dashpot(restitution: f64, pair_mass: f64, wall_mass: f64) -> f64 {
+    let l = restitution.ln();
+    let zeta = -l / (std::f64::consts::PI.powi(2) + l * l).sqrt();
+    let zeta_wall = zeta * (pair_mass / wall_mass).sqrt();
+    (-std::f64::consts::PI * zeta_wall / (1.0 - zeta_wall * zeta_wall).sqrt()).exp()
+}
