@@ -175,10 +175,11 @@ fn both_integrators_settle_a_bed_on_the_floor() {
             "{integrator:?}: {lowest}"
         );
         assert!(highest < 6.0 * DIAMETER, "{integrator:?}: top at {highest}");
+        // Nearly all the pour's energy is gone (no rolling resistance: a little rolling remains).
+        let kinetic = scene.kinetic_energy();
         assert!(
-            scene.kinetic_energy() < 1e-9,
-            "{integrator:?}: {:e} J",
-            scene.kinetic_energy()
+            kinetic < 1e-3 * potential,
+            "{integrator:?}: {kinetic:e} J of {potential:e} J"
         );
     }
 }
