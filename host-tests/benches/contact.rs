@@ -10,7 +10,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use soft_sphere::{
     ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring, LinearSpringDashpot,
     MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere,
-    Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, effective_mass,
+    Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -137,6 +137,35 @@ fn skipping(c: &mut Criterion) {
         "skip/undamped_model_aa_f64",
         ContactLaw::new(LinearSpring::new(1000.0f64).unwrap(), ModelAA(undamped)),
     );
+    // What a scene without walls saves: one wall check per sphere and step, for the spheres away
+    // from the wall (nearly all of a deep bed).
+    let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p));
+    let spheres: Vec<Sphere<f64>> = pairs::<f64>()
+        .into_iter()
+        .map(|(_, mut j)| {
+            j.position.z += 0.01;
+            j
+        })
+        .collect();
+    let dt = law
+        .time_step(law.recommended_time_step(spheres[0].mass), spheres[0].mass)
+        .unwrap();
+    let mut group = c.benchmark_group("contact");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function("skip/wall_check_away_from_wall_f64", |b| {
+        let mut states = [Default::default(); BATCH];
+        b.iter(|| {
+            let mut touching = 0usize;
+            for (s, state) in spheres.iter().zip(states.iter_mut()) {
+                if let Ok(Interaction::Touching(_)) = law.sphere_wall(s, &floor, state, dt) {
+                    touching += 1;
+                }
+            }
+            black_box(touching)
+        });
+    });
+    group.finish();
     println!(
         "per-contact state: Model A/B/AA {} bytes (f64), {} bytes (f32); stateless, C, frictionless {} bytes",
         size_of::<<ModelAA<f64> as TangentialModel<f64>>::State>(),

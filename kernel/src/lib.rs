@@ -111,6 +111,12 @@
 //!   [`Stateless`], [`ModelC`] and [`Frictionless`] keep no per-contact state; the stored-spring
 //!   laws keep three floats. (`layout.rs`)
 //!
+//! ## Scenes
+//!
+//! [`scene`] steps many spheres without allocation: a cell grid and Verlet list over
+//! caller-owned buffers, per-sphere contact slots for the history laws, walls as a compile-time
+//! slot ([`scene::NoWalls`] costs nothing), symplectic Euler or velocity Verlet.
+//!
 //! ## Conventions
 //!
 //! The unit normal `n` points from body i to body j (for a wall: from the sphere into the wall).
