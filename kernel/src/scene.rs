@@ -379,6 +379,16 @@ impl<'a, F: Float, S: Copy + Default, const K: usize> Scene<'a, F, S, K> {
         self.cell_start[0] = 0;
     }
 
+    /// The displacement of periodic image `image` (box lengths in x and y).
+    #[inline(always)]
+    fn image_shift(&self, image: [i8; 2]) -> Vec3<F> {
+        Vec3::new(
+            self.lengths[0] * F::from_f64(f64::from(image[0])),
+            self.lengths[1] * F::from_f64(f64::from(image[1])),
+            F::ZERO,
+        )
+    }
+
     #[inline(always)]
     fn cell_index(&self, x: usize, y: usize, z: usize) -> usize {
         (z * self.cells[1] + y) * self.cells[0] + x
@@ -512,11 +522,7 @@ impl<'a, F: Float, S: Copy + Default, const K: usize> Scene<'a, F, S, K> {
         for c in 0..self.candidate_count {
             let Candidate { i, j, image } = self.candidates[c];
             let (i, j) = (i as usize, j as usize);
-            let shift = Vec3::new(
-                self.lengths[0] * F::from_f64(f64::from(image[0])),
-                self.lengths[1] * F::from_f64(f64::from(image[1])),
-                F::ZERO,
-            );
+            let shift = self.image_shift(image);
             let mut partner = self.spheres[j];
             partner.position += shift;
             let reach = self.spheres[i].radius + partner.radius;
@@ -613,11 +619,7 @@ impl<'a, F: Float, S: Copy + Default, const K: usize> Scene<'a, F, S, K> {
         (here, there): (usize, usize),
         image: [i8; 2],
     ) -> Result<(), ContactError> {
-        let shift = Vec3::new(
-            self.lengths[0] * F::from_f64(f64::from(image[0])),
-            self.lengths[1] * F::from_f64(f64::from(image[1])),
-            F::ZERO,
-        );
+        let shift = self.image_shift(image);
         let (a_start, a_end) = (
             self.cell_start[here] as usize,
             self.cell_start[here + 1] as usize,
