@@ -11,7 +11,7 @@ use plotters::prelude::*;
 pub enum Mark {
     /// A line through the points.
     Line,
-    /// A dashed-looking thin line (theory curves).
+    /// A thin black line (theory curves).
     Theory,
     /// Filled circles (data).
     Points,

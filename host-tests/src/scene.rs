@@ -8,8 +8,7 @@ use soft_sphere::scene::{
     Candidate, ContactSlots, Domain, Scene, SceneBuffers, SceneError, StepInput, StepStats, WallSet,
 };
 use soft_sphere::{
-    ContactError, ContactLaw, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
-    Vec3,
+    ContactError, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel, Vec3,
 };
 
 /// Contacts a sphere can own (monodisperse packings have at most 12 neighbours).
@@ -290,9 +289,6 @@ pub fn positions_csv<F: Float>(spheres: &[Sphere<F>]) -> String {
     }
     text
 }
-
-/// A law's sphere-sphere and sphere-wall variants for one scene.
-pub type Laws<F, N, T> = (ContactLaw<F, N, T>, ContactLaw<F, N, T>);
 
 /// Restitution a wall contact needs for the same dashpot `eta_n` as a pair contact with
 /// restitution `e` (LAMMPS's `gamma_n` multiplies the effective mass, which is `m` at a wall and

@@ -3,9 +3,10 @@
 //! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity.
 
 use host_tests::scene::{Column, OwnedScene};
-use soft_sphere::scene::{Integrator, NoWalls, StepInput};
+use soft_sphere::scene::{Integrator, NoWalls, StepInput, WallSet};
 use soft_sphere::{
-    ContactLaw, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3, Wall,
+    ContactLaw, Libm, LinearSpringDashpot, ModelAA, Rotating, Sphere, TangentialParameters, Vec3,
+    Wall,
 };
 
 const DIAMETER: f64 = 1e-3;
@@ -36,11 +37,30 @@ fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, soft_sphere::scene::Domain
     (spheres, column.domain(height))
 }
 
-fn law() -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
+fn law() -> Law {
     ContactLaw::new(
         LinearSpringDashpot::new(1000.0, 0.9).unwrap(),
         ModelAA(TangentialParameters::new(285.7, 0.5, 0.5).unwrap()),
     )
+}
+
+type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+
+/// One law for pairs and walls, stepped at `dt` for a pair of these spheres' mass.
+fn input<'l, W: WallSet<f64>>(
+    law: &'l Law,
+    walls: &'l W,
+    (gravity, dt, sphere_mass): (Vec3<f64>, f64, f64),
+    integrator: Integrator,
+) -> StepInput<'l, f64, LinearSpringDashpot<f64>, ModelAA<f64>, Libm, Rotating, W> {
+    StepInput {
+        law,
+        wall_law: law,
+        walls,
+        gravity,
+        time_step: law.time_step(dt, sphere_mass / 2.0).unwrap(),
+        integrator,
+    }
 }
 
 /// Touching pairs by brute force with the minimum image in x and y.
@@ -66,15 +86,13 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
     for seed in 1..6 {
         let (spheres, domain) = gas(300, seed);
         let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 0).unwrap();
-        let m = scene.spheres[0].mass / 2.0;
-        let input = StepInput {
-            law: &law,
-            wall_law: &law,
-            walls: &NoWalls,
-            gravity: Vec3::ZERO,
-            time_step: law.time_step(2e-6, m).unwrap(),
-            integrator: Integrator::SymplecticEuler,
-        };
+        let m = scene.spheres[0].mass;
+        let input = input(
+            &law,
+            &NoWalls,
+            (Vec3::ZERO, 2e-6, m),
+            Integrator::SymplecticEuler,
+        );
         for _ in 0..50 {
             let before: Vec<Sphere<f64>> = scene.spheres.clone();
             let mut found = 0;
@@ -93,15 +111,8 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
     let run = |integrator| {
         let (spheres, domain) = gas(300, 9);
         let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 0).unwrap();
-        let m = scene.spheres[0].mass / 2.0;
-        let input = StepInput {
-            law: &law,
-            wall_law: &law,
-            walls: &NoWalls,
-            gravity: Vec3::ZERO,
-            time_step: law.time_step(2e-6, m).unwrap(),
-            integrator,
-        };
+        let m = scene.spheres[0].mass;
+        let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, m), integrator);
         let momentum = |s: &[Sphere<f64>]| {
             s.iter()
                 .fold(Vec3::ZERO, |p, s| p + s.velocity * s.mass)
@@ -149,15 +160,9 @@ fn both_integrators_settle_a_bed_on_the_floor() {
         let (spheres, domain) = gas(150, 3);
         let potential: f64 = spheres.iter().map(|s| s.mass * 9.81 * s.position.z).sum();
         let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 1).unwrap();
-        let m = scene.spheres[0].mass / 2.0;
-        let input = StepInput {
-            law: &law,
-            wall_law: &law,
-            walls: &floor,
-            gravity: Vec3::new(0.0, 0.0, -9.81),
-            time_step: law.time_step(4e-6, m).unwrap(),
-            integrator,
-        };
+        let m = scene.spheres[0].mass;
+        let gravity = Vec3::new(0.0, 0.0, -9.81);
+        let input = input(&law, &floor, (gravity, 4e-6, m), integrator);
         scene.run(&input, 40_000, |_, _| {}).unwrap();
         let lowest = scene
             .spheres

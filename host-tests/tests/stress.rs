@@ -255,7 +255,7 @@ fn extreme_but_valid_parameters_work_or_return_their_documented_error() {
         for angle in [0.0, 20.0, 60.0] {
             let mut sphere = incoming_sphere(radius, DENSITY, 3.9, angle);
             sphere.angular_velocity = Vec3::new(0.0, spin / radius, 0.0);
-            // Scale the stiffness so the peak overlap stays a few percent of the radius.
+            // k_n stays 1000 N/m at every size: at 10 m the contact is very soft, at 1 mm stiff.
             let dt = match law.time_step(law.recommended_time_step(sphere.mass), sphere.mass) {
                 Ok(dt) => dt,
                 Err(e) => panic!("{name}: the recommended step was refused: {e:?}"),
@@ -297,7 +297,7 @@ fn extreme_sizes_and_mass_ratios_collide_cleanly() {
     for (small, large) in [(1e-6, 1e-6), (1e-6, 1e-4), (10.0, 10.0), (1e-3, 1e-1)] {
         let mut i = Sphere::solid(Vec3::ZERO, small, DENSITY);
         let j_centre = Vec3::new(small + large, 0.0, 0.0);
-        let mut j = Sphere::solid(j_centre, large, DENSITY);
+        let j = Sphere::solid(j_centre, large, DENSITY);
         i.velocity = Vec3::new(1.0, 0.3, 0.0);
         i.angular_velocity = Vec3::new(0.0, 0.0, 1e3 / small);
         let m = soft_sphere::effective_mass(i.mass, j.mass);
@@ -308,15 +308,13 @@ fn extreme_sizes_and_mass_ratios_collide_cleanly() {
         );
         let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
         let before = kinetic(&i) + kinetic(&j);
-        let (a, b) = host_tests::impact::pair_collision(&law, i, j, dt, 1_000_000, |f, _, _| {
+        let (i, j) = host_tests::impact::pair_collision(&law, i, j, dt, 1_000_000, |f, _, _| {
             assert!(f.force_on_j().is_finite());
         })
         .expect("separates");
-        let gain = (kinetic(&a) + kinetic(&b)) / before - 1.0;
-        assert!(gain <= 1e-3, "{small} / {large}: {gain:e}");
-        i = a;
-        j = b;
         assert!(i.velocity.is_finite() && j.velocity.is_finite());
+        let gain = (kinetic(&i) + kinetic(&j)) / before - 1.0;
+        assert!(gain <= 1e-3, "{small} / {large}: {gain:e}");
     }
 }
 

@@ -523,12 +523,14 @@ impl<'a, F: Float, S: Copy + Default, const K: usize> Scene<'a, F, S, K> {
             let Candidate { i, j, image } = self.candidates[c];
             let (i, j) = (i as usize, j as usize);
             let shift = self.image_shift(image);
-            let mut partner = self.spheres[j];
-            partner.position += shift;
-            let reach = self.spheres[i].radius + partner.radius;
-            if (partner.position - self.spheres[i].position).norm_squared() >= reach * reach {
+            // Most candidates are within the skin but not touching: test before copying j.
+            let partner_position = self.spheres[j].position + shift;
+            let reach = self.spheres[i].radius + self.spheres[j].radius;
+            if (partner_position - self.spheres[i].position).norm_squared() >= reach * reach {
                 continue;
             }
+            let mut partner = self.spheres[j];
+            partner.position = partner_position;
             // Stateless laws store nothing: no lookup, no slot, no capacity limit.
             let stores = size_of::<S>() > 0;
             let mut state = if stores {

@@ -14,8 +14,8 @@ use fixed_loop::BoxScene;
 use panic_semihosting as _;
 use soft_sphere::{
     ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearSpringDashpot, ModelA,
-    ModelAA, ModelB, ModelC, Sphere, SpringDisplacement, Stateless, TangentialModel,
-    TangentialParameters, TimeStep, Vec3,
+    ModelAA, ModelB, ModelC, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep,
+    Vec3,
 };
 
 /// Steps of the scene compared with the host.
@@ -124,7 +124,6 @@ fn main() -> ! {
     measure("model_a", ModelA(p), ss_contact_model_a);
     measure("model_b", ModelB(p), ss_contact_model_b);
     measure("model_aa", ModelAA(p), ss_contact_model_aa);
-    let _ = SpringDisplacement::<f32>::default();
 
     let mut scene = match BoxScene::<Libm>::new() {
         Ok(scene) => scene,
