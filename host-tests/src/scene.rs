@@ -8,11 +8,16 @@ use soft_sphere::scene::{
     Candidate, ContactSlots, Domain, Scene, SceneBuffers, SceneError, StepInput, StepStats, WallSet,
 };
 use soft_sphere::{
-    ContactError, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel, Vec3,
+    ContactError, ContactState, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
+    Vec3,
 };
 
 /// Contacts a sphere can own (monodisperse packings have at most 12 neighbours).
 pub const SLOTS: usize = 16;
+
+/// Verlet-list room per sphere: a dense monodisperse packing with a skin of a tenth of a
+/// diameter lists about 4 pairs per sphere; 8 leaves room for looser skins and denser beds.
+pub const CANDIDATES_PER_SPHERE: usize = 8;
 
 /// A scene and all its buffers.
 #[derive(Clone, Debug)]
@@ -22,12 +27,14 @@ pub struct OwnedScene<F: Float, S> {
     forces: Vec<Vec3<F>>,
     torques: Vec<Vec3<F>>,
     slots: Vec<ContactSlots<S, SLOTS>>,
-    next_slots: Vec<ContactSlots<S, SLOTS>>,
     wall_states: Vec<S>,
+    next_wall_states: Vec<S>,
     walls: usize,
     cell_start: Vec<u32>,
     cell_entries: Vec<u32>,
     candidates: Vec<Candidate>,
+    states: Vec<S>,
+    next_states: Vec<S>,
     anchors: Vec<Vec3<F>>,
     /// The box.
     pub domain: Domain<F>,
@@ -37,7 +44,7 @@ pub struct OwnedScene<F: Float, S> {
     pub list_builds: usize,
 }
 
-impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
+impl<F: Float, S: ContactState> OwnedScene<F, S> {
     /// A scene of `spheres` in `domain` with `walls` walls, a Verlet list with `skin`, and
     /// spheres no larger than `largest_diameter`. The spheres are reordered along the cell grid
     /// (z, then y, then x) so that neighbours sit close in memory, as LAMMPS's atom sort does.
@@ -50,6 +57,7 @@ impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
         (largest_diameter, skin): (F, F),
         walls: usize,
     ) -> Result<Self, SceneError> {
+        Scene::<F, S, SLOTS>::check_spheres(&spheres)?;
         let n = spheres.len();
         let cells = Scene::<F, S, SLOTS>::cells_needed(&domain, (largest_diameter, skin))?;
         let cell = (largest_diameter + skin).to_f64();
@@ -65,12 +73,14 @@ impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
             forces: vec![Vec3::ZERO; n],
             torques: vec![Vec3::ZERO; n],
             slots: vec![ContactSlots::default(); n],
-            next_slots: vec![ContactSlots::default(); n],
             wall_states: vec![S::default(); n * walls],
+            next_wall_states: vec![S::default(); n * walls],
             walls,
             cell_start: vec![0; cells + 1],
             cell_entries: vec![0; n],
-            candidates: vec![Candidate::default(); 8 * n + 64],
+            candidates: vec![Candidate::default(); CANDIDATES_PER_SPHERE * n + 64],
+            states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
+            next_states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
             anchors: vec![Vec3::ZERO; n],
             domain,
             largest_diameter,
@@ -81,8 +91,12 @@ impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
 
     /// Runs `steps` steps, calling `each` with every step's totals.
     ///
+    /// Each call starts the kernel's scene afresh (the list is rebuilt, the stored springs carry
+    /// over).
+    ///
     /// # Errors
-    /// The first contact error; [`ContactError::HistoryFull`] past [`SLOTS`] contacts.
+    /// The first contact error; [`ContactError::HistoryFull`] past [`SLOTS`] contacts; the error
+    /// of an invalid sphere.
     pub fn run<N, T, M, R, W>(
         &mut self,
         input: &StepInput<'_, F, N, T, M, R, W>,
@@ -100,21 +114,28 @@ impl<F: Float, S: Copy + Default> OwnedScene<F, S> {
             forces: &mut self.forces,
             torques: &mut self.torques,
             slots: &mut self.slots,
-            next_slots: &mut self.next_slots,
             wall_states: &mut self.wall_states,
+            next_wall_states: &mut self.next_wall_states,
             cell_start: &mut self.cell_start,
             cell_entries: &mut self.cell_entries,
             candidates: &mut self.candidates,
+            states: &mut self.states,
+            next_states: &mut self.next_states,
             anchors: &mut self.anchors,
         };
-        let mut scene = Scene::new(
+        // The domain and buffers were checked by `new`; a sphere made non-finite by an earlier
+        // run's overflow is reported as the contact error it is.
+        let mut scene = match Scene::new(
             self.domain,
             (self.largest_diameter, self.skin),
             &mut self.spheres,
             buffers,
             self.walls,
-        )
-        .expect("buffers sized by OwnedScene::new");
+        ) {
+            Ok(scene) => scene,
+            Err(SceneError::Sphere { error, .. }) => return Err(error),
+            Err(other) => unreachable!("domain and buffers checked by OwnedScene::new: {other}"),
+        };
         for step in 0..steps {
             let stats = scene.step(input)?;
             each(step, &stats);

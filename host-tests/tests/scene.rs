@@ -1,12 +1,14 @@
 //! The kernel's scene runner (issue 5): the cell grid and Verlet list find exactly the touching
 //! pairs a brute-force search finds, across periodic boundaries; an isolated periodic gas keeps its
-//! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity.
+//! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity; the
+//! stored springs survive Verlet-list rebuilds; bad spheres and failed steps have defined answers.
 
 use host_tests::scene::{Column, OwnedScene};
-use soft_sphere::scene::{Integrator, NoWalls, StepInput, WallSet};
+use soft_sphere::motion::advance_solid_sphere;
+use soft_sphere::scene::{Domain, Integrator, NoWalls, SceneError, StepInput, WallSet};
 use soft_sphere::{
-    ContactLaw, Libm, LinearSpringDashpot, ModelAA, Rotating, Sphere, TangentialParameters, Vec3,
-    Wall,
+    ContactError, ContactLaw, Interaction, Libm, LinearSpringDashpot, ModelAA, Rotating, Sphere,
+    SpringDisplacement, TangentialParameters, Vec3, Wall,
 };
 
 const DIAMETER: f64 = 1e-3;
@@ -187,4 +189,139 @@ fn both_integrators_settle_a_bed_on_the_floor() {
             "{integrator:?}: {kinetic:e} J of {potential:e} J"
         );
     }
+}
+
+/// A 6 mm periodic box with no walls and room above.
+fn open_box() -> Domain<f64> {
+    Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(0.006, 0.006, 0.006),
+        periodic_x: true,
+        periodic_y: true,
+    }
+}
+
+/// Two spheres meeting obliquely across the periodic boundary in x; neither crosses it.
+fn oblique_pair() -> Vec<Sphere<f64>> {
+    let mut a = Sphere::solid(Vec3::new(0.55e-3, 3e-3, 3.0e-3), DIAMETER / 2.0, 2500.0);
+    let mut b = Sphere::solid(Vec3::new(5.591e-3, 3e-3, 3.3e-3), DIAMETER / 2.0, 2500.0);
+    a.velocity = Vec3::new(-0.1, 0.0, 0.0);
+    b.velocity = Vec3::new(0.1, 0.0, 0.0);
+    a.angular_velocity = Vec3::new(0.0, 30.0, 0.0);
+    vec![a, b]
+}
+
+#[test]
+fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
+    let law = law();
+    let steps = 150;
+    let mass = oblique_pair()[0].mass;
+    let dt = law.time_step(2e-6, mass / 2.0).unwrap();
+
+    // The contact law applied to the pair directly, with B seen through its periodic image.
+    let [mut a, mut b] = <[Sphere<f64>; 2]>::try_from(oblique_pair()).unwrap();
+    let shift = Vec3::new(-open_box().upper.x, 0.0, 0.0);
+    let mut state = SpringDisplacement::default();
+    let mut touching_steps = 0;
+    let mut largest_spring: f64 = 0.0;
+    for _ in 0..steps {
+        let mut image = b;
+        image.position = b.position + shift;
+        let (mut on_a, mut on_b) = ((Vec3::ZERO, Vec3::ZERO), (Vec3::ZERO, Vec3::ZERO));
+        if let Interaction::Touching(c) = law.sphere_sphere(&a, &image, &mut state, dt).unwrap() {
+            on_a = (Vec3::ZERO - c.force_on_j(), Vec3::ZERO + c.torque_on_i);
+            on_b = (Vec3::ZERO + c.force_on_j(), Vec3::ZERO + c.torque_on_j);
+            touching_steps += 1;
+            largest_spring = largest_spring.max(state.displacement.norm_squared().sqrt());
+        }
+        advance_solid_sphere(&mut a, on_a.0, on_a.1, dt);
+        advance_solid_sphere(&mut b, on_b.0, on_b.1, dt);
+    }
+    // The pair met, the spring stretched, and the contact ended within the run.
+    assert!(touching_steps > 20 && state == SpringDisplacement::default());
+    assert!(largest_spring > 1e-7, "spring {largest_spring:e} m");
+
+    // The scene: a wide skin (one list build), no skin (a build every step), and a fresh scene
+    // every step (the history parked and found again each time).
+    let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
+        let mut scene = OwnedScene::<f64, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), 0)
+            .unwrap();
+        assert!(scene.spheres[0].position.x < 1e-3, "sorted: A is sphere 0");
+        for _ in 0..calls {
+            scene.run(&input, steps / calls, |_, _| {}).unwrap();
+        }
+        for (ours, direct) in scene.spheres.iter().zip([a, b]) {
+            let bits = |s: &Sphere<f64>| {
+                [s.position, s.velocity, s.angular_velocity].map(|v| v.to_array().map(f64::to_bits))
+            };
+            assert_eq!(bits(ours), bits(&direct), "skin {skin}, {calls} calls");
+        }
+    }
+}
+
+#[test]
+fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
+    let cases: [(fn(&mut Sphere<f64>), ContactError); 4] = [
+        (|s| s.velocity.y = f64::NAN, ContactError::NonFiniteInput),
+        (|s| s.angular_velocity.x = f64::INFINITY, ContactError::NonFiniteInput),
+        (|s| s.radius = -s.radius, ContactError::NonPositiveRadius),
+        (|s| s.mass = 0.0, ContactError::NonPositiveMass),
+    ];
+    for (spoil, error) in cases {
+        let mut spheres = oblique_pair();
+        spoil(&mut spheres[1]);
+        let sorted_index = usize::from(spheres[1].position.x < spheres[0].position.x);
+        let result = OwnedScene::<f64, SpringDisplacement<f64>>::new(
+            spheres,
+            open_box(),
+            (DIAMETER, 1e-4),
+            0,
+        );
+        assert_eq!(
+            result.err(),
+            Some(SceneError::Sphere {
+                index: 1 - sorted_index,
+                error
+            })
+        );
+    }
+}
+
+#[test]
+fn a_failed_step_leaves_the_scene_as_it_was() {
+    let law = law();
+    let mut spheres = oblique_pair();
+    // A third sphere on top of the first: its contact has no normal.
+    spheres.push(spheres[0]);
+    let mass = spheres[0].mass;
+    let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
+    let before = scene.spheres.clone();
+    let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    assert_eq!(
+        scene.run(&input, 1, |_, _| {}),
+        Err(ContactError::CoincidentCentres)
+    );
+    assert_eq!(scene.spheres, before);
+}
+
+#[test]
+fn an_overflowing_step_is_reported_and_the_scene_refuses_to_go_on() {
+    let law = law();
+    let mut spheres = oblique_pair();
+    spheres[0].velocity.x = f64::MAX; // finite, so the scene takes it
+    let mass = spheres[0].mass;
+    let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
+    // Gravity along the velocity pushes it past the largest float in one kick.
+    let gravity = Vec3::new(1e300, 0.0, 0.0);
+    let input = input(&law, &NoWalls, (gravity, 2e-6, mass), Integrator::SymplecticEuler);
+    assert_eq!(
+        scene.run(&input, 1, |_, _| {}),
+        Err(ContactError::NonFiniteResult)
+    );
+    assert!(scene.spheres.iter().any(|s| !s.velocity.x.is_finite()));
+    assert_eq!(
+        scene.run(&input, 1, |_, _| {}),
+        Err(ContactError::NonFiniteInput)
+    );
 }

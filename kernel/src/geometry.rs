@@ -1,8 +1,8 @@
-//! Contact geometry and kinematics: normal, overlap, lever arms, effective mass and the bodies'
+//! Contact geometry and kinematics: normal, overlap, lever arms and the bodies'
 //! velocities, for sphere-sphere and sphere-wall contacts.
 
 use crate::backend::MathBackend;
-use crate::body::{Sphere, Wall, effective_mass};
+use crate::body::{Sphere, Wall};
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::vector::Vec3;
@@ -28,7 +28,6 @@ pub(crate) struct ContactFrame<F> {
     pub overlap: F,
     pub arm_i: F,
     pub arm_j: F,
-    pub effective_mass: F,
     /// Translational velocity of j relative to i.
     pub velocity: Vec3<F>,
     pub angular_velocity_i: Vec3<F>,
@@ -37,7 +36,7 @@ pub(crate) struct ContactFrame<F> {
 
 /// Checks one sphere's fields (finiteness first, so the sign tests below never see NaN).
 #[inline(always)]
-fn validate<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
+pub(crate) fn validate<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
     if !sphere.is_finite() {
         Err(ContactError::NonFiniteInput)
     } else if sphere.radius <= F::ZERO {
@@ -58,6 +57,17 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
 ) -> Result<Option<ContactFrame<F>>, ContactError> {
     validate(i)?;
     validate(j)?;
+    sphere_sphere_validated::<F, M>(i, j, lever_arm)
+}
+
+/// [`sphere_sphere`] for spheres whose fields the caller has already validated (a scene checks
+/// them once, not per contact); only the coincident-centre test remains.
+#[inline(always)]
+pub(crate) fn sphere_sphere_validated<F: Float, M: MathBackend<F>>(
+    i: &Sphere<F>,
+    j: &Sphere<F>,
+    lever_arm: LeverArm,
+) -> Result<Option<ContactFrame<F>>, ContactError> {
     let offset = j.position - i.position;
     let distance_squared = offset.norm_squared();
     if distance_squared < F::MIN_POSITIVE {
@@ -88,7 +98,6 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
         overlap,
         arm_i,
         arm_j,
-        effective_mass: effective_mass(i.mass, j.mass),
         velocity: j.velocity - i.velocity,
         angular_velocity_i: i.angular_velocity,
         angular_velocity_j: j.angular_velocity,
@@ -106,26 +115,35 @@ pub(crate) fn sphere_wall<F: Float>(
     if !wall.is_finite() {
         return Err(ContactError::NonFiniteInput);
     }
+    Ok(sphere_wall_validated(sphere, wall, lever_arm))
+}
+
+/// [`sphere_wall`] for a sphere and wall the caller has already validated.
+#[inline(always)]
+pub(crate) fn sphere_wall_validated<F: Float>(
+    sphere: &Sphere<F>,
+    wall: &Wall<F>,
+    lever_arm: LeverArm,
+) -> Option<ContactFrame<F>> {
     let distance = wall.distance_to(sphere.position);
     let overlap = sphere.radius - distance;
     // A NaN overlap (finite inputs whose distance overflowed) falls through and is reported as
     // a non-finite result.
     if overlap <= F::ZERO {
-        return Ok(None);
+        return None;
     }
     let arm_i = match lever_arm {
         LeverArm::Radius => sphere.radius,
         LeverArm::ContactPlane => distance.max_of(F::ZERO),
     };
-    Ok(Some(ContactFrame {
+    Some(ContactFrame {
         // From the sphere into the wall.
         normal: -wall.normal(),
         overlap,
         arm_i,
         arm_j: F::ZERO,
-        effective_mass: sphere.mass,
         velocity: wall.velocity - sphere.velocity,
         angular_velocity_i: sphere.angular_velocity,
         angular_velocity_j: Vec3::ZERO,
-    }))
+    })
 }

@@ -3,7 +3,7 @@
 use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
-use crate::body::{Sphere, Wall};
+use crate::body::{Sphere, Wall, effective_mass};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
@@ -278,7 +278,8 @@ where
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         let frame = geometry::sphere_sphere::<F, M>(i, j, self.lever_arm)?;
-        self.resolve(frame, state, time_step)
+        let oscillator = self.contact_oscillator(effective_mass(i.mass, j.mass));
+        self.resolve(frame, &oscillator, state, time_step)
     }
 
     /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step. State
@@ -295,13 +296,51 @@ where
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         let frame = geometry::sphere_wall(sphere, wall, self.lever_arm)?;
-        self.resolve(frame, state, time_step)
+        let oscillator = self.contact_oscillator(sphere.mass);
+        self.resolve(frame, &oscillator, state, time_step)
+    }
+
+    /// The normal oscillator of a contact with this effective mass, on this law's backend (what
+    /// every evaluation uses; [`ContactLaw::oscillator`] is the reference-backend one).
+    #[inline(always)]
+    pub(crate) fn contact_oscillator(&self, effective_mass: F) -> NormalOscillator<F> {
+        self.normal.oscillator::<M>(effective_mass)
+    }
+
+    /// [`ContactLaw::sphere_sphere`] for spheres a scene validated when it took them (their
+    /// masses and radii never change there, and it checks positions and velocities after every
+    /// step), with the oscillator of their effective mass computed once per mass pair.
+    #[inline(always)]
+    pub(crate) fn sphere_sphere_validated(
+        &self,
+        (i, j): (&Sphere<F>, &Sphere<F>),
+        oscillator: &NormalOscillator<F>,
+        state: &mut T::State,
+        time_step: TimeStep<F>,
+    ) -> Result<Interaction<F>, ContactError> {
+        let frame = geometry::sphere_sphere_validated::<F, M>(i, j, self.lever_arm)?;
+        self.resolve(frame, oscillator, state, time_step)
+    }
+
+    /// [`ContactLaw::sphere_wall`] for a validated sphere and wall; see
+    /// [`ContactLaw::sphere_sphere_validated`].
+    #[inline(always)]
+    pub(crate) fn sphere_wall_validated(
+        &self,
+        (sphere, wall): (&Sphere<F>, &Wall<F>),
+        oscillator: &NormalOscillator<F>,
+        state: &mut T::State,
+        time_step: TimeStep<F>,
+    ) -> Result<Interaction<F>, ContactError> {
+        let frame = geometry::sphere_wall_validated(sphere, wall, self.lever_arm);
+        self.resolve(frame, oscillator, state, time_step)
     }
 
     #[inline(always)]
     fn resolve(
         &self,
         frame: Option<ContactFrame<F>>,
+        oscillator: &NormalOscillator<F>,
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
@@ -311,10 +350,9 @@ where
         };
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
-        let oscillator = self.normal.oscillator::<M>(frame.effective_mass);
         let normal_force = self
             .normal
-            .force(frame.overlap, normal_velocity, &oscillator);
+            .force(frame.overlap, normal_velocity, oscillator);
 
         let mut forces = ContactForces {
             normal: n,
@@ -339,7 +377,7 @@ where
                 normal_force,
                 overlap: frame.overlap,
                 approach_rate: -normal_velocity,
-                oscillator,
+                oscillator: *oscillator,
                 time_step: time_step.seconds(),
             };
             let output = self.tangential.force::<M>(state, &input);

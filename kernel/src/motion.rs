@@ -48,6 +48,37 @@ pub fn drift<F: Float>(sphere: &mut Sphere<F>, time_step: TimeStep<F>) {
 
 #[inline(always)]
 fn kick<F: Float>(sphere: &mut Sphere<F>, force: Vec3<F>, torque: Vec3<F>, dt: F) {
-    sphere.velocity += force * (dt / sphere.mass);
-    sphere.angular_velocity += torque * (dt / sphere.solid_moment_of_inertia());
+    kick_by(sphere, force, torque, KickFactors::new(sphere, dt));
+}
+
+/// How much one kick of `dt` changes a sphere's velocity per newton and its angular velocity per
+/// newton metre: `dt / m` and `dt / I`. They depend only on the mass, radius and step, so a
+/// scene computes them once per kind of sphere instead of twice per sphere and step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct KickFactors<F> {
+    linear: F,
+    angular: F,
+}
+
+impl<F: Float> KickFactors<F> {
+    #[inline(always)]
+    pub(crate) fn new(sphere: &Sphere<F>, dt: F) -> Self {
+        Self {
+            linear: dt / sphere.mass,
+            angular: dt / sphere.solid_moment_of_inertia(),
+        }
+    }
+}
+
+/// A kick with precomputed factors; the same bits as [`half_kick`] or the kick of
+/// [`advance_solid_sphere`] with the factors of the same step.
+#[inline(always)]
+pub(crate) fn kick_by<F: Float>(
+    sphere: &mut Sphere<F>,
+    force: Vec3<F>,
+    torque: Vec3<F>,
+    factors: KickFactors<F>,
+) {
+    sphere.velocity += force * factors.linear;
+    sphere.angular_velocity += torque * factors.angular;
 }
