@@ -14,7 +14,7 @@ use soft_sphere::{
 const DIAMETER: f64 = 1e-3;
 
 /// A small periodic gas: spheres on a jittered lattice with random velocities, some touching.
-fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, soft_sphere::scene::Domain<f64>) {
+fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
     let column = Column {
         spheres: count,
         diameter: DIAMETER,
@@ -243,10 +243,15 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
 
     // The scene: a wide skin (one list build), no skin (a build every step), and a fresh scene
     // every step (the history parked and found again each time).
-    let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    let input = input(
+        &law,
+        &NoWalls,
+        (Vec3::ZERO, 2e-6, mass),
+        Integrator::SymplecticEuler,
+    );
     for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
-        let mut scene = OwnedScene::<f64, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), 0)
-            .unwrap();
+        let mut scene =
+            OwnedScene::<f64, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), 0).unwrap();
         assert!(scene.spheres[0].position.x < 1e-3, "sorted: A is sphere 0");
         for _ in 0..calls {
             scene.run(&input, steps / calls, |_, _| {}).unwrap();
@@ -262,9 +267,13 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
 
 #[test]
 fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
-    let cases: [(fn(&mut Sphere<f64>), ContactError); 4] = [
+    type Spoil = fn(&mut Sphere<f64>);
+    let cases: [(Spoil, ContactError); 4] = [
         (|s| s.velocity.y = f64::NAN, ContactError::NonFiniteInput),
-        (|s| s.angular_velocity.x = f64::INFINITY, ContactError::NonFiniteInput),
+        (
+            |s| s.angular_velocity.x = f64::INFINITY,
+            ContactError::NonFiniteInput,
+        ),
         (|s| s.radius = -s.radius, ContactError::NonPositiveRadius),
         (|s| s.mass = 0.0, ContactError::NonPositiveMass),
     ];
@@ -297,7 +306,12 @@ fn a_failed_step_leaves_the_scene_as_it_was() {
     let mass = spheres[0].mass;
     let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
     let before = scene.spheres.clone();
-    let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    let input = input(
+        &law,
+        &NoWalls,
+        (Vec3::ZERO, 2e-6, mass),
+        Integrator::SymplecticEuler,
+    );
     assert_eq!(
         scene.run(&input, 1, |_, _| {}),
         Err(ContactError::CoincidentCentres)
@@ -314,7 +328,12 @@ fn an_overflowing_step_is_reported_and_the_scene_refuses_to_go_on() {
     let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
     // Gravity along the velocity pushes it past the largest float in one kick.
     let gravity = Vec3::new(1e300, 0.0, 0.0);
-    let input = input(&law, &NoWalls, (gravity, 2e-6, mass), Integrator::SymplecticEuler);
+    let input = input(
+        &law,
+        &NoWalls,
+        (gravity, 2e-6, mass),
+        Integrator::SymplecticEuler,
+    );
     assert_eq!(
         scene.run(&input, 1, |_, _| {}),
         Err(ContactError::NonFiniteResult)
