@@ -4,8 +4,10 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use rayon::prelude::*;
 use soft_sphere::scene::{
-    Candidate, ContactSlots, Domain, Scene, SceneBuffers, SceneError, StepInput, StepStats, WallSet,
+    Candidate, ContactSlots, Domain, Executor, PairResult, Scene, SceneBuffers, SceneError,
+    Serial, StepInput, StepStats, WallSet,
 };
 use soft_sphere::{
     ContactError, ContactState, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
@@ -18,6 +20,33 @@ pub const SLOTS: usize = 16;
 /// Verlet-list room per sphere: a dense monodisperse packing with a skin of a tenth of a
 /// diameter lists about 4 pairs per sphere; 8 leaves room for looser skins and denser beds.
 pub const CANDIDATES_PER_SPHERE: usize = 8;
+
+/// A rayon thread pool as the kernel scene's [`Executor`]: each phase of a step (pairs, walls,
+/// integration) is spread over the pool's threads.
+#[derive(Debug)]
+pub struct Threads {
+    pool: rayon::ThreadPool,
+}
+
+impl Threads {
+    /// A pool of `threads` threads.
+    ///
+    /// # Errors
+    /// When the threads cannot be started.
+    pub fn new(threads: usize) -> Result<Self, rayon::ThreadPoolBuildError> {
+        Ok(Self {
+            pool: rayon::ThreadPoolBuilder::new().num_threads(threads).build()?,
+        })
+    }
+}
+
+impl Executor for Threads {
+    const PARALLEL: bool = true;
+
+    fn for_each_mut<T: Send, W: Fn(&mut T) + Sync + Send>(&self, items: &mut [T], work: W) {
+        self.pool.install(|| items.par_iter_mut().for_each(work));
+    }
+}
 
 /// A scene and all its buffers.
 #[derive(Clone, Debug)]
@@ -36,6 +65,7 @@ pub struct OwnedScene<F: Float, S> {
     states: Vec<S>,
     next_states: Vec<S>,
     anchors: Vec<Vec3<F>>,
+    pair_results: Vec<PairResult<F>>,
     /// The box.
     pub domain: Domain<F>,
     largest_diameter: F,
@@ -82,6 +112,7 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
             states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
             next_states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
             anchors: vec![Vec3::ZERO; n],
+            pair_results: vec![PairResult::default(); CANDIDATES_PER_SPHERE * n + 64],
             domain,
             largest_diameter,
             skin,
@@ -101,6 +132,28 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
         &mut self,
         input: &StepInput<'_, F, N, T, M, R, W>,
         steps: usize,
+        each: impl FnMut(usize, &StepStats<F>),
+    ) -> Result<(), ContactError>
+    where
+        N: NormalModel<F>,
+        T: TangentialModel<F, State = S>,
+        M: MathBackend<F>,
+        R: Rotation,
+        W: WallSet<F>,
+    {
+        self.run_on(input, steps, &Serial, each)
+    }
+
+    /// [`OwnedScene::run`] with the work of each step spread over `executor` (for example
+    /// [`Threads`]); the same bits as a serial run.
+    ///
+    /// # Errors
+    /// As [`OwnedScene::run`].
+    pub fn run_on<N, T, M, R, W, E>(
+        &mut self,
+        input: &StepInput<'_, F, N, T, M, R, W>,
+        steps: usize,
+        executor: &E,
         mut each: impl FnMut(usize, &StepStats<F>),
     ) -> Result<(), ContactError>
     where
@@ -109,6 +162,7 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
         M: MathBackend<F>,
         R: Rotation,
         W: WallSet<F>,
+        E: Executor,
     {
         let buffers = SceneBuffers {
             forces: &mut self.forces,
@@ -122,6 +176,7 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
             states: &mut self.states,
             next_states: &mut self.next_states,
             anchors: &mut self.anchors,
+            pair_results: &mut self.pair_results,
         };
         // The domain and buffers were checked by `new`; a sphere made non-finite by an earlier
         // run's overflow is reported as the contact error it is.
@@ -137,7 +192,7 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
             Err(other) => unreachable!("domain and buffers checked by OwnedScene::new: {other}"),
         };
         for step in 0..steps {
-            let stats = scene.step(input)?;
+            let stats = scene.step_on(input, executor)?;
             each(step, &stats);
         }
         self.list_builds = scene.list_builds();

@@ -3,7 +3,7 @@
 //! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity; the
 //! stored springs survive Verlet-list rebuilds; bad spheres and failed steps have defined answers.
 
-use host_tests::scene::{Column, OwnedScene};
+use host_tests::scene::{Column, OwnedScene, Threads};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::scene::{Domain, Integrator, NoWalls, SceneError, StepInput, WallSet};
 use soft_sphere::{
@@ -343,4 +343,46 @@ fn an_overflowing_step_is_reported_and_the_scene_refuses_to_go_on() {
         scene.run(&input, 1, |_, _| {}),
         Err(ContactError::NonFiniteInput)
     );
+}
+
+#[test]
+fn threads_give_the_same_bits_as_one_thread() {
+    let law = law();
+    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    let gravity = Vec3::new(0.0, 0.0, -9.81);
+    for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
+        let run = |threads: Option<usize>| {
+            let (spheres, domain) = gas(2000, 5);
+            let mut scene =
+                OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 1).unwrap();
+            let m = scene.spheres[0].mass;
+            let input = input(&law, &floor, (gravity, 4e-6, m), integrator);
+            let mut contacts = Vec::new();
+            let record = |_: usize, s: &soft_sphere::scene::StepStats<f64>| {
+                contacts.push((s.pair_contacts, s.wall_contacts, s.overlap_sum.to_bits()));
+            };
+            match threads {
+                None => scene.run(&input, 3000, record).unwrap(),
+                Some(n) => {
+                    let pool = Threads::new(n).unwrap();
+                    scene.run_on(&input, 3000, &pool, record).unwrap();
+                }
+            }
+            (scene.spheres, contacts)
+        };
+        let (serial, serial_contacts) = run(None);
+        // The gas fell onto the floor and collided on the way.
+        assert!(serial_contacts.iter().any(|c| c.1 > 0 && c.0 > 0));
+        for threads in [1, 2, 3] {
+            let (spheres, contacts) = run(Some(threads));
+            assert_eq!(contacts, serial_contacts, "{integrator:?}, {threads} threads");
+            for (a, b) in spheres.iter().zip(&serial) {
+                let bits = |s: &Sphere<f64>| {
+                    [s.position, s.velocity, s.angular_velocity]
+                        .map(|v| v.to_array().map(f64::to_bits))
+                };
+                assert_eq!(bits(a), bits(b), "{integrator:?}, {threads} threads");
+            }
+        }
+    }
 }

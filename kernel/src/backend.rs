@@ -31,9 +31,11 @@ macro_rules! impl_libm {
             fn sqrt(x: $t) -> $t {
                 libm::$sqrt(x)
             }
+            /// `sqrt(x) * (1 / x)`: the root and the reciprocal run side by side instead of one
+            /// after the other (within 1.5 ulp, against 1 ulp for `1 / sqrt(x)`).
             #[inline(always)]
             fn inv_sqrt(x: $t) -> $t {
-                1.0 / libm::$sqrt(x)
+                libm::$sqrt(x) * (1.0 / x)
             }
             #[inline(always)]
             fn atan2(y: $t, x: $t) -> $t {

@@ -26,7 +26,7 @@ impl<F: Float> NormalOscillator<F> {
 }
 
 /// A normal force law: the first slot of a [`ContactLaw`](crate::ContactLaw).
-pub trait NormalModel<F: Float>: Copy + core::fmt::Debug {
+pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// The oscillator of a contact with effective mass `effective_mass`, computed with backend `M`.
     fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F>;
 

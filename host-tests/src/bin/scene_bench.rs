@@ -7,16 +7,18 @@
 //!
 //! Usage: `cargo run --release -p host-tests --bin scene_bench -- [--spheres 10000|50000]
 //! [--steps 10000] [--repeat 3] [--integrator euler|verlet] [--variant full|frictionless|
-//! non-rotating|undamped|no-walls] [--lammps DIR]`
+//! non-rotating|undamped|no-walls] [--threads N] [--lammps DIR]`. Without `--threads` the step is
+//! the kernel's serial one; with it, a rayon pool of N threads (the same bits).
 
 use std::error::Error;
 use std::path::PathBuf;
 use std::time::Instant;
 
 use host_tests::scene::{
-    Column, OwnedScene, positions_csv, wall_restitution_for_same_dashpot, write_lammps_data,
+    Column, OwnedScene, Threads, positions_csv, wall_restitution_for_same_dashpot,
+    write_lammps_data,
 };
-use soft_sphere::scene::{Integrator, NoWalls, StepInput, WallSet};
+use soft_sphere::scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
 use soft_sphere::{
     ContactLaw, Frictionless, LinearSpring, LinearSpringDashpot, MathBackend, ModelAA, NormalModel,
     Rotation, Sphere, TangentialModel, TangentialParameters, Vec3, Wall,
@@ -38,6 +40,8 @@ struct Options {
     integrator: Integrator,
     variant: String,
     lammps: Option<PathBuf>,
+    /// None: the kernel's serial step; Some(n): a rayon pool of n threads.
+    threads: Option<usize>,
 }
 
 fn options() -> Result<Options, Box<dyn Error>> {
@@ -48,6 +52,7 @@ fn options() -> Result<Options, Box<dyn Error>> {
         integrator: Integrator::SymplecticEuler,
         variant: "full".into(),
         lammps: None,
+        threads: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -71,6 +76,7 @@ fn options() -> Result<Options, Box<dyn Error>> {
             }
             "--variant" => o.variant = value()?,
             "--lammps" => o.lammps = Some(value()?.into()),
+            "--threads" => o.threads = Some(value()?.parse::<usize>()?.max(1)),
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -153,6 +159,8 @@ struct Measured {
     kinetic_energy: f64,
     contacts_per_particle: f64,
     mean_overlap: f64,
+    /// Sphere-sphere contact-steps at the Coulomb limit, over all contact-steps.
+    sliding_fraction: f64,
 }
 
 fn time_runs<N, T, M, R, W>(
@@ -170,6 +178,7 @@ where
 {
     let mut seconds = Vec::new();
     let mut last = (0.0, 0.0, 0.0);
+    let mut sliding_fraction = 0.0;
     for _ in 0..o.repeat {
         let mut scene = OwnedScene::<f64, T::State>::new(
             spheres.to_vec(),
@@ -178,8 +187,18 @@ where
             W::COUNT,
         )?;
         let mut stats = Default::default();
+        let (mut touching, mut sliding) = (0usize, 0usize);
+        let record = |_: usize, s: &StepStats<f64>| {
+            stats = *s;
+            touching += s.pair_contacts;
+            sliding += s.sliding_contacts;
+        };
+        let pool = o.threads.map(Threads::new).transpose()?;
         let start = Instant::now();
-        scene.run(input, o.steps, |_, s| stats = *s)?;
+        match &pool {
+            None => scene.run(input, o.steps, record)?,
+            Some(pool) => scene.run_on(input, o.steps, pool, record)?,
+        }
         seconds.push(start.elapsed().as_secs_f64());
         eprintln!(
             "  run: {:.3} s, {} list builds",
@@ -187,6 +206,7 @@ where
             scene.list_builds
         );
         let n = spheres.len() as f64;
+        sliding_fraction = sliding as f64 / touching.max(1) as f64;
         last = (
             scene.kinetic_energy(),
             2.0 * stats.pair_contacts as f64 / n,
@@ -203,6 +223,7 @@ where
         kinetic_energy: last.0,
         contacts_per_particle: last.1,
         mean_overlap: last.2,
+        sliding_fraction,
     })
 }
 
@@ -307,11 +328,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     let median = m.seconds[m.seconds.len() / 2];
     let particle_steps = n * o.steps as f64;
     println!(
-        "soft-sphere {} spheres, {} steps, variant {}, {:?}: loop time min {:.3} s median {:.3} s max {:.3} s",
+        "soft-sphere {} spheres, {} steps, variant {}, {:?}, {}: loop time min {:.3} s median {:.3} s max {:.3} s",
         spheres.len(),
         o.steps,
         o.variant,
         o.integrator,
+        match o.threads {
+            None => "serial".to_string(),
+            Some(n) => format!("{n} threads"),
+        },
         m.seconds[0],
         median,
         m.seconds[m.seconds.len() - 1]
@@ -324,6 +349,10 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!(
         "  end: kinetic energy {:.6e} J, contacts per particle {:.4}, mean overlap {:.6e} m",
         m.kinetic_energy, m.contacts_per_particle, m.mean_overlap
+    );
+    println!(
+        "  sliding: {:.2} % of pair contact-steps",
+        100.0 * m.sliding_fraction
     );
     Ok(())
 }

@@ -12,23 +12,22 @@
 //! of sphere.
 
 mod grid;
+mod parallel;
 mod slots;
+mod step;
 mod walls;
 
 pub use grid::{Candidate, Domain};
+pub use parallel::{Executor, PairResult, Serial};
 pub use slots::ContactSlots;
 pub use walls::{NoWalls, WallSet};
 
-use crate::backend::MathBackend;
-use crate::body::{Sphere, effective_mass};
+use crate::body::Sphere;
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::geometry::validate;
-use crate::law::{ContactLaw, Interaction};
-use crate::motion::{KickFactors, kick_by};
-use crate::normal::{NormalModel, NormalOscillator};
-use crate::rotation::Rotation;
-use crate::tangential::{ContactState, TangentialModel};
+use crate::law::ContactLaw;
+use crate::tangential::ContactState;
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
 
@@ -80,6 +79,9 @@ pub struct SceneBuffers<'a, F, S, const K: usize> {
     pub next_states: &'a mut [S],
     /// Positions at the last list build.
     pub anchors: &'a mut [Vec3<F>],
+    /// Empty, or as long as `candidates`: each pair's forces in a step spread over threads
+    /// ([`Scene::step_on`] with a parallel [`Executor`]; with an empty buffer it runs serially).
+    pub pair_results: &'a mut [PairResult<F>],
 }
 
 /// Why a scene could not be set up.
@@ -105,6 +107,8 @@ pub enum SceneError {
 pub struct StepStats<F> {
     /// Sphere-sphere contacts touching.
     pub pair_contacts: usize,
+    /// Sphere-sphere contacts at the Coulomb limit.
+    pub sliding_contacts: usize,
     /// Sphere-wall contacts touching.
     pub wall_contacts: usize,
     /// Sum of the sphere-sphere overlaps (m).
@@ -145,6 +149,7 @@ pub struct Scene<'a, F, S: Copy, const K: usize> {
     next_states: &'a mut [S],
     candidate_count: usize,
     anchors: &'a mut [Vec3<F>],
+    pair_results: &'a mut [PairResult<F>],
     grid: Grid<F>,
     skin: F,
     list_current: bool,
@@ -168,70 +173,6 @@ impl<F, S: Copy, const K: usize> Drop for Scene<'_, F, S, K> {
             self.next_states[..live].copy_from_slice(&self.states[..live]);
             self.next_wall_states.copy_from_slice(self.wall_states);
         }
-    }
-}
-
-/// The last mass pair's oscillator: in a scene of one kind of sphere it is computed once.
-/// Recomputing it for a new pair of masses gives the same bits as the law's own evaluation.
-struct OscillatorMemo<F> {
-    masses: [F; 2],
-    oscillator: NormalOscillator<F>,
-}
-
-impl<F: Float> OscillatorMemo<F> {
-    /// Masses are positive in a scene, so zero never matches.
-    fn new() -> Self {
-        Self {
-            masses: [F::ZERO; 2],
-            oscillator: NormalOscillator::default(),
-        }
-    }
-
-    #[inline(always)]
-    fn get<N, T, M, R>(
-        &mut self,
-        law: &ContactLaw<F, N, T, M, R>,
-        effective: impl FnOnce() -> F,
-        masses: [F; 2],
-    ) -> &NormalOscillator<F>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F>,
-        M: MathBackend<F>,
-        R: Rotation,
-    {
-        if masses != self.masses {
-            self.masses = masses;
-            self.oscillator = law.contact_oscillator(effective());
-        }
-        &self.oscillator
-    }
-}
-
-/// The last sphere kind's kick factors (see [`KickFactors`]).
-struct KickMemo<F> {
-    kind: [F; 2],
-    factors: KickFactors<F>,
-    dt: F,
-}
-
-impl<F: Float> KickMemo<F> {
-    fn new(dt: F) -> Self {
-        Self {
-            kind: [F::ZERO; 2],
-            factors: KickFactors::new(&Sphere::default(), F::ONE),
-            dt,
-        }
-    }
-
-    #[inline(always)]
-    fn get(&mut self, sphere: &Sphere<F>) -> KickFactors<F> {
-        let kind = [sphere.mass, sphere.radius];
-        if kind != self.kind {
-            self.kind = kind;
-            self.factors = KickFactors::new(sphere, self.dt);
-        }
-        self.factors
     }
 }
 
@@ -264,7 +205,8 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
             && b.wall_states.len() == n * walls
             && b.next_wall_states.len() == n * walls
             && b.states.len() == b.candidates.len()
-            && b.next_states.len() == b.candidates.len();
+            && b.next_states.len() == b.candidates.len()
+            && (b.pair_results.is_empty() || b.pair_results.len() == b.candidates.len());
         if !lengths_ok {
             return Err(SceneError::BufferLength);
         }
@@ -285,6 +227,7 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
             // Until the first build, the whole buffer: its relaxed states are skipped.
             candidate_count: listed,
             anchors: b.anchors,
+            pair_results: b.pair_results,
             grid,
             skin,
             list_current: false,
@@ -332,254 +275,6 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
     /// The contact forces of the last evaluation, one per sphere.
     pub fn forces(&self) -> &[Vec3<F>] {
         self.forces
-    }
-
-    /// One step of the scene.
-    ///
-    /// # Errors
-    /// - The first [`ContactError`] of any contact. With symplectic Euler the scene is then
-    ///   exactly as before the call; with velocity Verlet the spheres have had the step's first
-    ///   half kick and drift, and the contact history is as before.
-    /// - [`ContactError::HistoryFull`] when, at a list rebuild, a sphere owns more than `K`
-    ///   touching contacts or the list needs more candidates than its buffer holds (nothing is
-    ///   lost: enlarge the buffers and rebuild the scene from its spheres and states).
-    /// - [`ContactError::NonFiniteResult`] when finite forces moved a sphere to a non-finite
-    ///   position or velocity; the step is complete, and every later step returns
-    ///   [`ContactError::NonFiniteInput`].
-    pub fn step<N, T, M, R, W>(
-        &mut self,
-        input: &StepInput<'_, F, N, T, M, R, W>,
-    ) -> Result<StepStats<F>, ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-        W: WallSet<F>,
-    {
-        if self.overflowed {
-            return Err(ContactError::NonFiniteInput);
-        }
-        let dt = input.time_step.seconds();
-        match input.integrator {
-            Integrator::SymplecticEuler => {
-                let stats = self.evaluate(input, true)?;
-                self.forces_current = false;
-                self.kick_all(input.gravity, dt, Some(dt))?;
-                Ok(stats)
-            }
-            Integrator::VelocityVerlet => {
-                if !self.forces_current {
-                    // The first step's forces: the history is not advanced by them.
-                    self.evaluate(input, false)?;
-                }
-                // The forces no longer belong to the positions until the evaluation succeeds.
-                self.forces_current = false;
-                self.kick_all(input.gravity, dt * F::HALF, Some(dt))?;
-                let stats = self.evaluate(input, true)?;
-                self.forces_current = true;
-                self.kick_all(input.gravity, dt * F::HALF, None)?;
-                Ok(stats)
-            }
-        }
-    }
-
-    /// Kicks every sphere by `kick` seconds under its contact force and torque and gravity, then,
-    /// given a `drift`, moves it that long at its new velocity and wraps it into the periodic box.
-    ///
-    /// # Errors
-    /// [`ContactError::NonFiniteResult`] when a sphere's position or velocity is no longer
-    /// finite; the scene then refuses every later step.
-    fn kick_all(
-        &mut self,
-        gravity: Vec3<F>,
-        kick: F,
-        drift: Option<F>,
-    ) -> Result<(), ContactError> {
-        let mut memo = KickMemo::new(kick);
-        let mut finite = true;
-        for (k, sphere) in self.spheres.iter_mut().enumerate() {
-            let factors = memo.get(sphere);
-            kick_by(
-                sphere,
-                self.forces[k] + gravity * sphere.mass,
-                self.torques[k],
-                factors,
-            );
-            if let Some(dt) = drift {
-                sphere.position += sphere.velocity * dt;
-            }
-            finite &= sphere.is_finite();
-        }
-        if !finite {
-            self.overflowed = true;
-            return Err(ContactError::NonFiniteResult);
-        }
-        if drift.is_some() {
-            self.wrap();
-        }
-        Ok(())
-    }
-
-    /// Brings spheres back into the periodic box; a sphere that crosses invalidates the list's
-    /// image shifts, so the list is rebuilt. Also checks the skin: a sphere that moved more than
-    /// half of it since the last build could now touch a pair the list does not hold.
-    fn wrap(&mut self) {
-        let domain = self.grid.domain;
-        let half_skin_squared = self.skin * self.skin * F::from_f64(0.25);
-        let mut stale = false;
-        for (sphere, anchor) in self.spheres.iter_mut().zip(self.anchors.iter()) {
-            let p = &mut sphere.position;
-            if domain.periodic_x {
-                let wrapped = wrap_into(p.x, domain.lower.x, domain.upper.x);
-                stale |= wrapped != p.x;
-                p.x = wrapped;
-            }
-            if domain.periodic_y {
-                let wrapped = wrap_into(p.y, domain.lower.y, domain.upper.y);
-                stale |= wrapped != p.y;
-                p.y = wrapped;
-            }
-            stale |= (*p - *anchor).norm_squared() > half_skin_squared;
-        }
-        if stale {
-            self.list_current = false;
-        }
-    }
-
-    /// Contact forces and torques at the current state into the force buffers, and, when
-    /// `commit`, the history advanced (all or nothing).
-    fn evaluate<N, T, M, R, W>(
-        &mut self,
-        input: &StepInput<'_, F, N, T, M, R, W>,
-        commit: bool,
-    ) -> Result<StepStats<F>, ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-        W: WallSet<F>,
-    {
-        if !self.list_current {
-            self.rebuild_list()?;
-        }
-        self.forces.fill(Vec3::ZERO);
-        self.torques.fill(Vec3::ZERO);
-        let mut stats = StepStats {
-            pair_contacts: 0,
-            wall_contacts: 0,
-            overlap_sum: F::ZERO,
-        };
-        self.pair_forces(input.law, input.time_step, &mut stats)?;
-        if W::COUNT > 0 {
-            self.wall_forces(input, &mut stats)?;
-        }
-        if commit {
-            core::mem::swap(&mut self.wall_states, &mut self.next_wall_states);
-            core::mem::swap(&mut self.states, &mut self.next_states);
-            self.swapped = !self.swapped;
-        }
-        Ok(stats)
-    }
-
-    fn pair_forces<N, T, M, R>(
-        &mut self,
-        law: &ContactLaw<F, N, T, M, R>,
-        time_step: TimeStep<F>,
-        stats: &mut StepStats<F>,
-    ) -> Result<(), ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-    {
-        // Stateless laws store nothing: no state is read or written.
-        let stores = size_of::<S>() > 0;
-        let mut memo = OscillatorMemo::new();
-        for c in 0..self.candidate_count {
-            let Candidate { i, j, image } = self.candidates[c];
-            let (i, j) = (i as usize, j as usize);
-            let (sphere_i, sphere_j) = (&self.spheres[i], &self.spheres[j]);
-            // Most candidates are within the skin but not touching: test before copying j.
-            let partner_position = sphere_j.position + self.grid.image_shift(image);
-            let reach = sphere_i.radius + sphere_j.radius;
-            if (partner_position - sphere_i.position).norm_squared() >= reach * reach {
-                if stores {
-                    self.next_states[c] = S::default();
-                }
-                continue;
-            }
-            let mut partner = *sphere_j;
-            partner.position = partner_position;
-            let oscillator = memo.get(
-                law,
-                || effective_mass(sphere_i.mass, sphere_j.mass),
-                [sphere_i.mass, sphere_j.mass],
-            );
-            let mut state = if stores { self.states[c] } else { S::default() };
-            let interaction = law.sphere_sphere_validated(
-                (sphere_i, &partner),
-                oscillator,
-                &mut state,
-                time_step,
-            )?;
-            if stores {
-                self.next_states[c] = state;
-            }
-            if let Interaction::Touching(contact) = interaction {
-                let on_j = contact.force_on_j();
-                self.forces[i] -= on_j;
-                self.forces[j] += on_j;
-                self.torques[i] += contact.torque_on_i;
-                self.torques[j] += contact.torque_on_j;
-                stats.pair_contacts += 1;
-                stats.overlap_sum += contact.overlap;
-            }
-        }
-        Ok(())
-    }
-
-    fn wall_forces<N, T, M, R, W>(
-        &mut self,
-        input: &StepInput<'_, F, N, T, M, R, W>,
-        stats: &mut StepStats<F>,
-    ) -> Result<(), ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-        W: WallSet<F>,
-    {
-        for k in 0..W::COUNT {
-            // A wall's velocity is a public field: checked once per step, not per sphere.
-            if !input.walls.wall(k).is_finite() {
-                return Err(ContactError::NonFiniteInput);
-            }
-        }
-        let mut memo = OscillatorMemo::new();
-        for (index, sphere) in self.spheres.iter().enumerate() {
-            for k in 0..W::COUNT {
-                let at = index * W::COUNT + k;
-                let mut state = self.wall_states[at];
-                let oscillator = memo.get(input.wall_law, || sphere.mass, [sphere.mass, F::ONE]);
-                let contact = input.wall_law.sphere_wall_validated(
-                    (sphere, input.walls.wall(k)),
-                    oscillator,
-                    &mut state,
-                    input.time_step,
-                )?;
-                self.next_wall_states[at] = state;
-                if let Interaction::Touching(c) = contact {
-                    self.forces[index] += c.force_on_i();
-                    self.torques[index] += c.torque_on_i;
-                    stats.wall_contacts += 1;
-                }
-            }
-        }
-        Ok(())
     }
 
     /// Rebuilds the Verlet list from the cell grid and carries each touching pair's state over
@@ -632,18 +327,6 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
         self.list_current = true;
         self.list_builds += 1;
         Ok(())
-    }
-}
-
-#[inline(always)]
-fn wrap_into<F: Float>(value: F, lower: F, upper: F) -> F {
-    let length = upper - lower;
-    if value < lower {
-        value + length
-    } else if value >= upper {
-        value - length
-    } else {
-        value
     }
 }
 

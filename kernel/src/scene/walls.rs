@@ -4,7 +4,7 @@ use crate::body::Wall;
 use crate::float::Float;
 
 /// The walls of a scene, chosen at compile time: [`NoWalls`] costs nothing.
-pub trait WallSet<F: Float> {
+pub trait WallSet<F: Float>: Sync {
     /// How many walls.
     const COUNT: usize;
     /// Wall `k` (`k < COUNT`).

@@ -39,7 +39,8 @@ pub fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     if projected_squared < F::MIN_POSITIVE {
         return Vec3::ZERO;
     }
-    projected * M::sqrt(displacement.norm_squared() / projected_squared)
+    // sqrt(|xi|^2 / |p|^2) as |xi| * (1 / |p|): no division waits for a root.
+    projected * (M::sqrt(displacement.norm_squared()) * M::inv_sqrt(projected_squared))
 }
 
 /// The shared step of the stored-spring laws. `limited` caps the kept displacement at

@@ -31,7 +31,7 @@ use crate::normal::NormalOscillator;
 use crate::vector::Vec3;
 
 /// Per-contact state a tangential slot keeps between steps. `()` for slots that keep none.
-pub trait ContactState: Copy + core::fmt::Debug + Default + PartialEq {
+pub trait ContactState: Copy + core::fmt::Debug + Default + PartialEq + Send + Sync {
     /// True when every stored number is finite.
     fn is_finite(&self) -> bool;
 }
@@ -75,7 +75,7 @@ pub struct TangentialOutput<F, S> {
 }
 
 /// A tangential force law: the second slot of a [`ContactLaw`](crate::ContactLaw).
-pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug {
+pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// Per-contact state (`()` when the law stores nothing).
     type State: ContactState;
 
