@@ -6,8 +6,8 @@ use std::path::Path;
 
 use rayon::prelude::*;
 use soft_sphere::scene::{
-    Candidate, ContactSlots, Domain, Executor, PairResult, Scene, SceneBuffers, SceneError,
-    Serial, StepInput, StepStats, WallSet,
+    Candidate, ContactSlots, Domain, Executor, PairResult, Scene, SceneBuffers, SceneError, Serial,
+    StepInput, StepStats, WallSet,
 };
 use soft_sphere::{
     ContactError, ContactState, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
@@ -35,7 +35,9 @@ impl Threads {
     /// When the threads cannot be started.
     pub fn new(threads: usize) -> Result<Self, rayon::ThreadPoolBuildError> {
         Ok(Self {
-            pool: rayon::ThreadPoolBuilder::new().num_threads(threads).build()?,
+            pool: rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()?,
         })
     }
 }

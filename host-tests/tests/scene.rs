@@ -375,7 +375,10 @@ fn threads_give_the_same_bits_as_one_thread() {
         assert!(serial_contacts.iter().any(|c| c.1 > 0 && c.0 > 0));
         for threads in [1, 2, 3] {
             let (spheres, contacts) = run(Some(threads));
-            assert_eq!(contacts, serial_contacts, "{integrator:?}, {threads} threads");
+            assert_eq!(
+                contacts, serial_contacts,
+                "{integrator:?}, {threads} threads"
+            );
             for (a, b) in spheres.iter().zip(&serial) {
                 let bits = |s: &Sphere<f64>| {
                     [s.position, s.velocity, s.angular_velocity]

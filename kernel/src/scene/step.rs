@@ -451,15 +451,11 @@ impl<F: Float, S: ContactState, const K: usize> Scene<'_, F, S, K> {
             }
         } else {
             let (forces, torques) = (&mut *self.forces, &mut *self.torques);
-            context.stretch(
-                candidates,
-                (self.states, self.next_states),
-                |c, result| {
-                    if result.touching {
-                        add_pair((forces, torques), &mut stats, candidates[c], &result);
-                    }
-                },
-            )?;
+            context.stretch(candidates, (self.states, self.next_states), |c, result| {
+                if result.touching {
+                    add_pair((forces, torques), &mut stats, candidates[c], &result);
+                }
+            })?;
         }
         if W::COUNT > 0 {
             stats.wall_contacts = self.wall_forces(input, executor)?;

@@ -39,8 +39,9 @@ pub fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     if projected_squared < F::MIN_POSITIVE {
         return Vec3::ZERO;
     }
-    // sqrt(|xi|^2 / |p|^2) as |xi| * (1 / |p|): no division waits for a root.
-    projected * (M::sqrt(displacement.norm_squared()) * M::inv_sqrt(projected_squared))
+    // One root of a ratio near 1: an approximate backend's root is at its best there, where the
+    // product of two approximate roots would be off by their errors every step.
+    projected * M::sqrt(displacement.norm_squared() / projected_squared)
 }
 
 /// The shared step of the stored-spring laws. `limited` caps the kept displacement at
