@@ -224,8 +224,11 @@ fn scene_laws<F: Float, M: MathBackend<F>>(
     })
 }
 
+/// A bed of spheres and its box.
+type Bed = (Vec<Sphere<f64>>, scene::Domain<f64>);
+
 /// The settled bed (f64; settled at e = 0.3 and stopped), then shaken.
-fn shaken_bed() -> Result<(Vec<Sphere<f64>>, scene::Domain<f64>), Box<dyn Error>> {
+fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
     let (lattice, height) = BED.lattice::<f64>();
     let domain = BED.domain(height);
     let mut bed = OwnedScene::<f64, _>::new(lattice, domain, (BED.diameter, BED_SKIN), 1)?;
