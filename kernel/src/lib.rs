@@ -114,8 +114,16 @@
 //! ## Scenes
 //!
 //! [`scene`] steps many spheres without allocation: a cell grid and Verlet list over
-//! caller-owned buffers, per-sphere contact slots for the history laws, walls as a compile-time
-//! slot ([`scene::NoWalls`] costs nothing), symplectic Euler or velocity Verlet.
+//! caller-owned buffers, the contact states kept beside the list (and parked in per-sphere slots
+//! while it is rebuilt), walls as a compile-time slot ([`scene::NoWalls`] costs nothing),
+//! symplectic Euler or velocity Verlet, on one thread or over a caller's [`scene::Executor`].
+//! Its guarantees (`tests/scene.rs`):
+//! - every touching pair is found, across periodic boundaries (against a brute-force search);
+//! - stored springs survive list rebuilds, the same bits as the law applied to the pair directly;
+//! - the same bits for any number of threads, and run to run;
+//! - invalid spheres are refused when the scene takes them ([`scene::SceneError::Sphere`]); a
+//!   failed step leaves the history as it was (with symplectic Euler, the whole scene); a step
+//!   whose integration overflows is reported and the scene refuses to go on.
 //!
 //! ## Conventions
 //!
