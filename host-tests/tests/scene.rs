@@ -298,6 +298,40 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
 }
 
 #[test]
+fn stored_states_of_pairs_outside_the_scene_are_refused() {
+    use soft_sphere::scene::{Candidate, ContactSlots, Scene, SceneBuffers};
+    let mut spheres = oblique_pair();
+    let domain = open_box();
+    let cells =
+        Scene::<f64, SpringDisplacement<f64>, 4>::cells_needed(&domain, (DIAMETER, 0.0)).unwrap();
+    let mut candidates = [Candidate::default(); 4];
+    // A state left in a slot whose candidate names no pair of these two spheres (0, 0).
+    let mut states = [SpringDisplacement::default(); 4];
+    states[2].displacement.x = 1e-9;
+    let (mut forces, mut torques, mut anchors) =
+        ([Vec3::ZERO; 2], [Vec3::ZERO; 2], [Vec3::ZERO; 2]);
+    let mut slots = [ContactSlots::<_, 4>::default(); 2];
+    let (mut start, mut entries) = (vec![0; cells + 1], [0; 2]);
+    let mut next_states = states;
+    let buffers = SceneBuffers {
+        forces: &mut forces,
+        torques: &mut torques,
+        slots: &mut slots,
+        wall_states: &mut [],
+        next_wall_states: &mut [],
+        cell_start: &mut start,
+        cell_entries: &mut entries,
+        candidates: &mut candidates,
+        states: &mut states,
+        next_states: &mut next_states,
+        anchors: &mut anchors,
+        pair_results: &mut [],
+    };
+    let scene = Scene::new(domain, (DIAMETER, 0.0), &mut spheres, buffers, 0);
+    assert_eq!(scene.err(), Some(SceneError::History));
+}
+
+#[test]
 fn a_failed_step_leaves_the_scene_as_it_was() {
     let law = law();
     let mut spheres = oblique_pair();

@@ -121,7 +121,8 @@
 //! - every touching pair is found, across periodic boundaries (against a brute-force search);
 //! - stored springs survive list rebuilds, the same bits as the law applied to the pair directly;
 //! - the same bits for any number of threads, and run to run;
-//! - invalid spheres are refused when the scene takes them ([`scene::SceneError::Sphere`]); a
+//! - invalid spheres, and stored states of pairs that are not the scene's, are refused when the
+//!   scene takes them ([`scene::SceneError::Sphere`], [`scene::SceneError::History`]); a
 //!   failed step leaves the history as it was (with symplectic Euler, the whole scene); a step
 //!   whose integration overflows is reported and the scene refuses to go on.
 //!

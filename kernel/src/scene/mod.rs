@@ -92,6 +92,9 @@ pub enum SceneError {
     /// The domain or cell size is not finite and positive, or a periodic direction has fewer
     /// than 3 cells (the half-shell would visit a pair twice).
     Domain,
+    /// A stored pair state in `states` belongs to a candidate whose spheres are not this
+    /// scene's (the buffers were not zeroed for a fresh scene, or come from another one).
+    History,
     /// Sphere `index` is not valid (`error` says why: a non-finite field, a radius or mass that
     /// is not positive).
     Sphere {
@@ -212,6 +215,14 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
         }
         Self::check_spheres(spheres)?;
         let listed = b.candidates.len();
+        let foreign = b
+            .candidates
+            .iter()
+            .zip(b.states.iter())
+            .any(|(c, state)| *state != S::default() && !(c.i < c.j && (c.j as usize) < n));
+        if foreign {
+            return Err(SceneError::History);
+        }
         Ok(Self {
             spheres,
             forces: b.forces,
@@ -338,6 +349,10 @@ impl core::fmt::Display for SceneError {
             ),
             Self::Domain => f.write_str(
                 "the scene domain or cell size is invalid (periodic directions need 3 cells)",
+            ),
+            Self::History => f.write_str(
+                "a stored pair state belongs to spheres that are not this scene's (zero the states \
+                 for a fresh scene)",
             ),
             Self::Sphere { index, error } => write!(f, "sphere {index} is invalid: {error}"),
         }
