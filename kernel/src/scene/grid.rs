@@ -202,12 +202,12 @@ impl<F: Float> Grid<F> {
                         ) else {
                             continue;
                         };
+                        let there = self.index(x, y, z);
                         let cells = (
                             &entries[start[here] as usize..start[here + 1] as usize],
-                            &entries[start[self.index(x, y, z)] as usize
-                                ..start[self.index(x, y, z) + 1] as usize],
+                            &entries[start[there] as usize..start[there + 1] as usize],
                         );
-                        let same_cell = here == self.index(x, y, z);
+                        let same_cell = here == there;
                         count = self.cell_pairs(
                             spheres,
                             cells,

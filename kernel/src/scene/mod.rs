@@ -199,10 +199,14 @@ impl<'a, F: Float, S: ContactState, const K: usize> Scene<'a, F, S, K> {
         let grid = Grid::new(domain, largest_diameter + skin)?;
         let n = spheres.len();
         let b = buffers;
-        let lengths_ok = [b.forces.len(), b.torques.len(), b.anchors.len()]
-            .iter()
-            .chain(&[b.slots.len(), b.cell_entries.len()])
-            .all(|&len| len == n)
+        let per_sphere = [
+            b.forces.len(),
+            b.torques.len(),
+            b.anchors.len(),
+            b.slots.len(),
+            b.cell_entries.len(),
+        ];
+        let lengths_ok = per_sphere.iter().all(|&len| len == n)
             && b.cell_start.len() == grid.total() + 1
             && n <= u32::MAX as usize
             && b.wall_states.len() == n * walls
