@@ -143,6 +143,7 @@ mod body;
 mod error;
 mod float;
 mod geometry;
+pub mod lanes;
 mod law;
 pub mod motion;
 mod normal;
