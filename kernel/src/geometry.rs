@@ -5,7 +5,6 @@ use crate::backend::MathBackend;
 use crate::body::{Sphere, Wall};
 use crate::error::ContactError;
 use crate::float::Float;
-use crate::lanes::{LaneVec, Lanes, SphereLanes};
 use crate::vector::Vec3;
 
 /// The lever arm from a sphere's centre to the contact point, used for both the slip velocity and
@@ -78,20 +77,6 @@ pub(crate) fn sphere_sphere_validated<F: Float, M: MathBackend<F>>(
     if distance_squared >= reach * reach {
         return Ok(None);
     }
-    Ok(Some(touching_frame::<F, M>(i, j, offset, lever_arm)))
-}
-
-/// The frame of two spheres known to touch, neither coincident nor apart: `offset` is
-/// `j.position - i.position`. No branch on the data, so a batch of contacts runs it lane by lane.
-#[inline(always)]
-pub(crate) fn touching_frame<F: Float, M: MathBackend<F>>(
-    i: &Sphere<F>,
-    j: &Sphere<F>,
-    offset: Vec3<F>,
-    lever_arm: LeverArm,
-) -> ContactFrame<F> {
-    let distance_squared = offset.norm_squared();
-    let reach = i.radius + j.radius;
     let inverse_distance = M::inv_sqrt(distance_squared);
     let distance = distance_squared * inverse_distance;
     // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an approximate
@@ -108,7 +93,7 @@ pub(crate) fn touching_frame<F: Float, M: MathBackend<F>>(
             )
         }
     };
-    ContactFrame {
+    Ok(Some(ContactFrame {
         normal: offset * inverse_distance,
         overlap,
         arm_i,
@@ -116,55 +101,7 @@ pub(crate) fn touching_frame<F: Float, M: MathBackend<F>>(
         velocity: j.velocity - i.velocity,
         angular_velocity_i: i.angular_velocity,
         angular_velocity_j: j.angular_velocity,
-    }
-}
-
-/// [`ContactFrame`]s of `L` contacts, one per lane.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct FrameLanes<F: Float, const L: usize> {
-    pub normal: LaneVec<F, L>,
-    pub overlap: Lanes<F, L>,
-    pub arm_i: Lanes<F, L>,
-    pub arm_j: Lanes<F, L>,
-    pub velocity: LaneVec<F, L>,
-    pub angular_velocity_i: LaneVec<F, L>,
-    pub angular_velocity_j: LaneVec<F, L>,
-}
-
-/// [`touching_frame`] lane by lane (the same bits), with `offset = j.position - i.position`.
-#[inline(always)]
-pub(crate) fn touching_frame_lanes<F: Float, M: MathBackend<F>, const L: usize>(
-    i: &SphereLanes<F, L>,
-    j: &SphereLanes<F, L>,
-    offset: LaneVec<F, L>,
-    lever_arm: LeverArm,
-) -> FrameLanes<F, L> {
-    let distance_squared = offset.norm_squared();
-    let reach = i.radius + j.radius;
-    let inverse_distance = distance_squared.map(M::inv_sqrt);
-    let distance = distance_squared * inverse_distance;
-    let overlap = (reach * reach - distance_squared) / (reach + distance);
-    let (arm_i, arm_j) = match lever_arm {
-        LeverArm::Radius => (i.radius, j.radius),
-        LeverArm::ContactPlane => {
-            let (ri, rj) = (i.radius * i.radius, j.radius * j.radius);
-            let half_inverse = Lanes::splat(F::HALF) * inverse_distance;
-            let zero = Lanes::splat(F::ZERO);
-            (
-                ((distance_squared + ri - rj) * half_inverse).max_of(zero),
-                ((distance_squared + rj - ri) * half_inverse).max_of(zero),
-            )
-        }
-    };
-    FrameLanes {
-        normal: offset * inverse_distance,
-        overlap,
-        arm_i,
-        arm_j,
-        velocity: j.velocity - i.velocity,
-        angular_velocity_i: i.angular_velocity,
-        angular_velocity_j: j.angular_velocity,
-    }
+    }))
 }
 
 /// The contact between a sphere (body i) and a wall (body j), `None` when they do not overlap.

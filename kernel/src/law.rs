@@ -7,12 +7,9 @@ use crate::body::{Sphere, Wall, effective_mass};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
-use crate::lanes::{LaneVec, Lanes, Mask, SphereLanes};
 use crate::normal::{NormalModel, NormalOscillator};
 use crate::rotation::{NonRotating, Rotating, Rotation};
-use crate::tangential::{
-    ContactState, TangentialInput, TangentialLanes, TangentialModel, TangentialOutput,
-};
+use crate::tangential::{ContactState, TangentialInput, TangentialModel};
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
 
@@ -60,7 +57,7 @@ type Slots<F, M, R> = PhantomData<fn() -> (F, M, R)>;
 
 /// The forces and torques of one touching contact. Forces act on body j; body i receives the
 /// negative (action and reaction). For a sphere-wall contact the sphere is body i.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactForces<F> {
     /// Unit normal from i to j (for a wall: from the sphere into the wall).
     pub normal: Vec3<F>,
@@ -107,18 +104,6 @@ impl<F: Float> ContactForces<F> {
             b.z,
         ])
     }
-}
-
-/// What `L` touching sphere pairs contribute, one per lane (see
-/// [`ContactLaw::sphere_sphere_lanes`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct ContactLanes<F: Float, const L: usize> {
-    /// [`ContactForces::force_on_j`].
-    pub force_on_j: LaneVec<F, L>,
-    pub torque_on_i: LaneVec<F, L>,
-    pub torque_on_j: LaneVec<F, L>,
-    pub overlap: Lanes<F, L>,
-    pub sliding: Mask<L>,
 }
 
 /// The outcome of evaluating a pair.
@@ -351,86 +336,6 @@ where
         self.resolve(frame, oscillator, state, time_step)
     }
 
-    /// `L` sphere pairs side by side, each known to touch (the scene sifted them): lane `l` is
-    /// exactly, to the bit, what [`ContactLaw::sphere_sphere_validated`] gives for lane `l` of
-    /// `spheres` and `partners`, and `states[l]` is advanced the same way (see [`crate::lanes`]).
-    ///
-    /// `None`, with the states untouched, when any lane is not a plain touching contact
-    /// (coincident centres, apart after all, or a non-finite result): the caller then evaluates
-    /// the lanes one at a time, which names the first error in order.
-    #[inline(always)]
-    pub(crate) fn sphere_sphere_lanes<const L: usize>(
-        &self,
-        (spheres, partners): (&SphereLanes<F, L>, &SphereLanes<F, L>),
-        oscillators: &[NormalOscillator<F>; L],
-        states: &mut [T::State; L],
-        time_step: TimeStep<F>,
-    ) -> Option<ContactLanes<F, L>> {
-        let offset = partners.position - spheres.position;
-        let distance_squared = offset.norm_squared();
-        let reach = spheres.radius + partners.radius;
-        let coincident = distance_squared.less(Lanes::splat(F::MIN_POSITIVE));
-        let touching = distance_squared.less(reach * reach);
-        if coincident.contains(&true) || touching.contains(&false) {
-            return None;
-        }
-        let frame =
-            geometry::touching_frame_lanes::<F, M, L>(spheres, partners, offset, self.lever_arm);
-        let n = frame.normal;
-        let normal_velocity = frame.velocity.dot(n);
-        let normal_force = Lanes::from_fn(|l| {
-            self.normal
-                .force(frame.overlap.0[l], normal_velocity.0[l], &oscillators[l])
-        });
-        let mut tangential_force = LaneVec::default();
-        let mut contact = ContactLanes {
-            force_on_j: LaneVec::default(),
-            torque_on_i: LaneVec::default(),
-            torque_on_j: LaneVec::default(),
-            overlap: frame.overlap,
-            sliding: [false; L],
-        };
-        let mut next_states = *states;
-        let mut probe = normal_force.finite_probe();
-        if T::ACTIVE {
-            let mut slip_velocity = frame.velocity - n * normal_velocity;
-            if R::ROTATES {
-                let spin =
-                    frame.angular_velocity_i * frame.arm_i + frame.angular_velocity_j * frame.arm_j;
-                slip_velocity = slip_velocity - spin.cross(n);
-            }
-            let input = TangentialLanes {
-                normal: n,
-                slip_velocity,
-                normal_force,
-                overlap: frame.overlap,
-                approach_rate: -normal_velocity,
-                oscillator: *oscillators,
-                time_step: time_step.seconds(),
-            };
-            let output = self.tangential.force_lanes::<M, L>(states, &input);
-            tangential_force = output.force;
-            contact.sliding = output.sliding;
-            next_states = output.states;
-            probe = probe + output.force.finite_probe();
-            if R::ROTATES {
-                let moment = n.cross(output.force);
-                contact.torque_on_i = moment * -frame.arm_i;
-                contact.torque_on_j = moment * -frame.arm_j;
-                probe =
-                    probe + contact.torque_on_i.finite_probe() + contact.torque_on_j.finite_probe();
-            }
-        }
-        // As ContactForces::force_on_j, zero tangential force included.
-        contact.force_on_j = n * normal_force + tangential_force;
-        let finite = probe.less_or_equal(Lanes::splat(F::ZERO));
-        if finite.contains(&false) || !next_states.iter().all(ContactState::is_finite) {
-            return None;
-        }
-        *states = next_states;
-        Some(contact)
-    }
-
     #[inline(always)]
     fn resolve(
         &self,
@@ -443,35 +348,13 @@ where
             *state = T::State::default();
             return Ok(Interaction::Apart);
         };
-        let (mut forces, input) = self.normal_stage(&frame, oscillator, time_step);
-        let mut next_state = *state;
-        if T::ACTIVE {
-            let output = self.tangential.force::<M>(state, &input);
-            Self::tangential_stage(&frame, &mut forces, &output);
-            next_state = output.state;
-        }
-        if !(forces.is_finite() && next_state.is_finite()) {
-            return Err(ContactError::NonFiniteResult);
-        }
-        *state = next_state;
-        Ok(Interaction::Touching(forces))
-    }
-
-    /// The normal force of a touching contact, and what the tangential slot sees of it (the
-    /// slip velocity only when the slot is active).
-    #[inline(always)]
-    fn normal_stage(
-        &self,
-        frame: &ContactFrame<F>,
-        oscillator: &NormalOscillator<F>,
-        time_step: TimeStep<F>,
-    ) -> (ContactForces<F>, TangentialInput<F>) {
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
         let normal_force = self
             .normal
             .force(frame.overlap, normal_velocity, oscillator);
-        let forces = ContactForces {
+
+        let mut forces = ContactForces {
             normal: n,
             overlap: frame.overlap,
             normal_force,
@@ -480,40 +363,37 @@ where
             torque_on_j: Vec3::ZERO,
             sliding: false,
         };
-        let mut slip_velocity = Vec3::ZERO;
+        let mut next_state = *state;
         if T::ACTIVE {
-            slip_velocity = frame.velocity - n * normal_velocity;
+            let mut slip_velocity = frame.velocity - n * normal_velocity;
             if R::ROTATES {
                 let spin =
                     frame.angular_velocity_i * frame.arm_i + frame.angular_velocity_j * frame.arm_j;
                 slip_velocity -= spin.cross(n);
             }
+            let input = TangentialInput {
+                normal: n,
+                slip_velocity,
+                normal_force,
+                overlap: frame.overlap,
+                approach_rate: -normal_velocity,
+                oscillator: *oscillator,
+                time_step: time_step.seconds(),
+            };
+            let output = self.tangential.force::<M>(state, &input);
+            forces.tangential_force = output.force;
+            forces.sliding = output.sliding;
+            next_state = output.state;
+            if R::ROTATES {
+                let moment = n.cross(output.force);
+                forces.torque_on_i = moment * -frame.arm_i;
+                forces.torque_on_j = moment * -frame.arm_j;
+            }
         }
-        let input = TangentialInput {
-            normal: n,
-            slip_velocity,
-            normal_force,
-            overlap: frame.overlap,
-            approach_rate: -normal_velocity,
-            oscillator: *oscillator,
-            time_step: time_step.seconds(),
-        };
-        (forces, input)
-    }
-
-    /// The tangential slot's force, and the torques it makes about the centres.
-    #[inline(always)]
-    fn tangential_stage(
-        frame: &ContactFrame<F>,
-        forces: &mut ContactForces<F>,
-        output: &TangentialOutput<F, T::State>,
-    ) {
-        forces.tangential_force = output.force;
-        forces.sliding = output.sliding;
-        if R::ROTATES {
-            let moment = frame.normal.cross(output.force);
-            forces.torque_on_i = moment * -frame.arm_i;
-            forces.torque_on_j = moment * -frame.arm_j;
+        if !(forces.is_finite() && next_state.is_finite()) {
+            return Err(ContactError::NonFiniteResult);
         }
+        *state = next_state;
+        Ok(Interaction::Touching(forces))
     }
 }

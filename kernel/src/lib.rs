@@ -143,7 +143,6 @@ mod body;
 mod error;
 mod float;
 mod geometry;
-pub mod lanes;
 mod law;
 pub mod motion;
 mod normal;

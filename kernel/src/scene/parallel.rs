@@ -8,8 +8,6 @@
 //! step adds them, so the result is the same bits for any number of threads, and the same bits
 //! as [`Serial`].
 
-use crate::float::Float;
-use crate::law::ContactForces;
 use crate::vector::Vec3;
 
 /// Runs independent pieces of a scene step, on as many threads as it likes.
@@ -51,21 +49,6 @@ pub struct PairResult<F> {
     pub touching: bool,
     /// The contact was at the Coulomb limit.
     pub sliding: bool,
-}
-
-impl<F: Float> From<&ContactForces<F>> for PairResult<F> {
-    /// A touching contact's contribution.
-    #[inline(always)]
-    fn from(contact: &ContactForces<F>) -> Self {
-        Self {
-            force_on_j: contact.force_on_j(),
-            torque_on_i: contact.torque_on_i,
-            torque_on_j: contact.torque_on_j,
-            overlap: contact.overlap,
-            touching: true,
-            sliding: contact.sliding,
-        }
-    }
 }
 
 /// At most this many pieces per phase: enough to keep a many-core machine busy, few enough for

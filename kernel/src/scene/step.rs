@@ -11,8 +11,7 @@ use crate::backend::MathBackend;
 use crate::body::{Sphere, effective_mass};
 use crate::error::ContactError;
 use crate::float::Float;
-use crate::lanes::{SphereLanes, lanes};
-use crate::law::{ContactLanes, ContactLaw, Interaction};
+use crate::law::{ContactLaw, Interaction};
 use crate::motion::{KickFactors, kick_by};
 use crate::normal::{NormalModel, NormalOscillator};
 use crate::rotation::Rotation;
@@ -22,9 +21,6 @@ use crate::vector::Vec3;
 
 /// Candidates sifted for touching pairs at a time (a stack array of this many indices).
 const SIFT_BLOCK: usize = 256;
-
-/// Touching pairs evaluated side by side.
-const LANES: usize = 4;
 
 /// The last mass pair's oscillator: in a scene of one kind of sphere it is computed once.
 /// Recomputing it for a new pair of masses gives the same bits as the law's own evaluation.
@@ -145,49 +141,31 @@ where
             self.time_step,
         )?;
         Ok(match interaction {
-            Interaction::Touching(c) => PairResult::from(&c),
+            Interaction::Touching(c) => PairResult {
+                force_on_j: c.force_on_j(),
+                torque_on_i: c.torque_on_i,
+                torque_on_j: c.torque_on_j,
+                overlap: c.overlap,
+                touching: true,
+                sliding: c.sliding,
+            },
             Interaction::Apart => PairResult::default(),
         })
     }
 
-    /// Sifted pairs of one block side by side (see [`ContactLaw::sphere_sphere_lanes`]); `None`
-    /// when some lane needs the one-at-a-time path.
-    #[inline(always)]
-    fn contact_lanes(
-        &self,
-        candidates: &[Candidate; LANES],
-        memo: &mut OscillatorMemo<F>,
-        states: &mut [T::State; LANES],
-    ) -> Option<ContactLanes<F, LANES>> {
-        let spheres = SphereLanes::from_fn(|l| self.spheres[candidates[l].i as usize]);
-        let partners = SphereLanes::from_fn(|l| {
-            let Candidate { j, image, .. } = candidates[l];
-            let mut partner = self.spheres[j as usize];
-            partner.position += self.grid.image_shift(image);
-            partner
-        });
-        let oscillators: [NormalOscillator<F>; LANES] = lanes(|l| {
-            let masses = [spheres.mass.0[l], partners.mass.0[l]];
-            *memo.get(self.law, || effective_mass(masses[0], masses[1]), masses)
-        });
-        self.law
-            .sphere_sphere_lanes((&spheres, &partners), &oscillators, states, self.time_step)
-    }
-
     /// The contacts of a stretch of the list: each pair's state into `next_states` and what it
-    /// contributes to `sink` (with its position in the stretch), in list order.
+    /// contributes to `add` (with its position in the stretch), in list order.
     fn stretch<S: ContactState>(
         &self,
         candidates: &[Candidate],
         (states, next_states): (&[S], &mut [S]),
-        sink: &mut impl PairSink<F>,
+        mut add: impl FnMut(usize, PairResult<F>),
     ) -> Result<(), ContactError>
     where
         T: TangentialModel<F, State = S>,
     {
         // Stateless laws store nothing: no state is read or written.
         let stores = size_of::<S>() > 0;
-        let read = |at: usize| if stores { states[at] } else { S::default() };
         let mut memo = OscillatorMemo::new();
         let mut touching = [0u32; SIFT_BLOCK];
         for (b, block) in candidates.chunks(SIFT_BLOCK).enumerate() {
@@ -197,93 +175,17 @@ where
                 next_states[first..first + block.len()].fill(S::default());
             }
             let found = self.sift(block, &mut touching);
-            let mut batches = touching[..found].chunks_exact(LANES);
-            for lane in &mut batches {
-                let Ok(lane) = <&[u32; LANES]>::try_from(lane) else {
-                    continue; // chunks_exact: never
-                };
-                let at: [usize; LANES] = lanes(|l| first + lane[l] as usize);
-                let mut lane_states: [S; LANES] = lanes(|l| read(at[l]));
-                let pairs: [Candidate; LANES] = lanes(|l| block[lane[l] as usize]);
-                let Some(results) = self.contact_lanes(&pairs, &mut memo, &mut lane_states) else {
-                    // Some lane is not a plain touching contact: one at a time, for the error.
-                    for l in 0..LANES {
-                        let mut state = read(at[l]);
-                        let result = self.contact(pairs[l], &mut memo, &mut state)?;
-                        if stores {
-                            next_states[at[l]] = state;
-                        }
-                        sink.add(at[l], &result);
-                    }
-                    continue;
-                };
-                for l in 0..LANES {
-                    if stores {
-                        next_states[at[l]] = lane_states[l];
-                    }
-                    sink.add(
-                        at[l],
-                        &PairResult {
-                            force_on_j: results.force_on_j.lane(l),
-                            torque_on_i: results.torque_on_i.lane(l),
-                            torque_on_j: results.torque_on_j.lane(l),
-                            overlap: results.overlap.0[l],
-                            touching: true,
-                            sliding: results.sliding[l],
-                        },
-                    );
-                }
-            }
-            for &k in batches.remainder() {
+            for &k in &touching[..found] {
                 let at = first + k as usize;
-                let mut state = read(at);
+                let mut state = if stores { states[at] } else { S::default() };
                 let result = self.contact(block[k as usize], &mut memo, &mut state)?;
                 if stores {
                     next_states[at] = state;
                 }
-                sink.add(at, &result);
+                add(at, result);
             }
         }
         Ok(())
-    }
-}
-
-/// Where a stretch's pair contributions go, in list order. A trait, not a closure: its one
-/// method is always inlined into the contact loop.
-trait PairSink<F> {
-    /// The contribution of the pair at `at` (its position in the stretch).
-    fn add(&mut self, at: usize, result: &PairResult<F>);
-}
-
-/// Straight onto the spheres (the serial step).
-struct SphereSink<'s, F> {
-    forces: &'s mut [Vec3<F>],
-    torques: &'s mut [Vec3<F>],
-    stats: &'s mut StepStats<F>,
-    candidates: &'s [Candidate],
-}
-
-impl<F: Float> PairSink<F> for SphereSink<'_, F> {
-    #[inline(always)]
-    fn add(&mut self, at: usize, result: &PairResult<F>) {
-        if result.touching {
-            add_pair(
-                (self.forces, self.torques),
-                self.stats,
-                self.candidates[at],
-                result,
-            );
-        }
-    }
-}
-
-/// Into a piece of the results buffer (a parallel step adds them up afterwards).
-struct ResultSink<'s, F>(&'s mut [PairResult<F>]);
-
-impl<F: Copy> PairSink<F> for ResultSink<'_, F> {
-    #[inline(always)]
-    fn add(&mut self, at: usize, result: &PairResult<F>) {
-        self.0[at] = *result;
     }
 }
 
@@ -532,10 +434,11 @@ impl<F: Float, S: ContactState, const K: usize> Scene<'_, F, S, K> {
             executor.for_each_mut(&mut pieces, |piece| {
                 let Some(piece) = piece else { return };
                 piece.results.fill(PairResult::default());
+                let results = &mut *piece.results;
                 piece.outcome = context.stretch(
                     piece.candidates,
                     (piece.states, piece.next_states),
-                    &mut ResultSink(&mut *piece.results),
+                    |at, result| results[at] = result,
                 );
             });
             for piece in pieces.iter().flatten() {
@@ -547,13 +450,12 @@ impl<F: Float, S: ContactState, const K: usize> Scene<'_, F, S, K> {
                 }
             }
         } else {
-            let mut sink = SphereSink {
-                forces: self.forces,
-                torques: self.torques,
-                stats: &mut stats,
-                candidates,
-            };
-            context.stretch(candidates, (self.states, self.next_states), &mut sink)?;
+            let (forces, torques) = (&mut *self.forces, &mut *self.torques);
+            context.stretch(candidates, (self.states, self.next_states), |c, result| {
+                if result.touching {
+                    add_pair((forces, torques), &mut stats, candidates[c], &result);
+                }
+            })?;
         }
         if W::COUNT > 0 {
             stats.wall_contacts = self.wall_forces(input, executor)?;

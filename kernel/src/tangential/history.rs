@@ -3,12 +3,10 @@
 //! then add `v_t dt`) and differ in the sliding rule and in what they keep after sliding.
 
 use super::{
-    ContactState, Slide, TangentialInput, TangentialLanes, TangentialLanesOutput, TangentialModel,
-    TangentialOutput, TangentialParameters, coulomb_lanes,
+    ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
 };
 use crate::backend::MathBackend;
 use crate::float::Float;
-use crate::lanes::{LaneVec, Lanes, lanes};
 use crate::normal::NormalOscillator;
 use crate::vector::Vec3;
 
@@ -77,54 +75,6 @@ fn stored_spring_step<F: Float, M: MathBackend<F>>(
     }
 }
 
-/// [`rotate_into_tangent_plane`] lane by lane, without a branch on the data (the same bits).
-#[inline(always)]
-fn rotate_lanes<F: Float, M: MathBackend<F>, const L: usize>(
-    displacement: LaneVec<F, L>,
-    normal: LaneVec<F, L>,
-) -> LaneVec<F, L> {
-    let projected = displacement - normal * displacement.dot(normal);
-    let projected_squared = projected.norm_squared();
-    let rotated = projected * (displacement.norm_squared() / projected_squared).map(M::sqrt);
-    let vanished = projected_squared.less(Lanes::splat(F::MIN_POSITIVE));
-    LaneVec::select(vanished, LaneVec::default(), rotated)
-}
-
-/// [`stored_spring_step`] lane by lane, without a branch on the data: every lane's sliding
-/// force and capped displacement are computed and then chosen (the cap only when some lane
-/// slides). The same operations in each lane, so the same bits.
-#[inline(always)]
-fn stored_spring_lanes<F: Float, M: MathBackend<F>, const L: usize>(
-    parameters: &TangentialParameters<F>,
-    states: &[SpringDisplacement<F>; L],
-    contacts: &TangentialLanes<F, L>,
-    slide: Slide,
-    limited: bool,
-) -> TangentialLanesOutput<F, SpringDisplacement<F>, L> {
-    let stored = LaneVec::from_fn(|l| states[l].displacement);
-    let displacement = rotate_lanes::<F, M, L>(stored, contacts.normal)
-        + contacts.slip_velocity * Lanes::splat(contacts.time_step);
-    let trial = parameters.trial_force_lanes(displacement, contacts);
-    let limit = parameters.limit_lanes(contacts);
-    let (force, sliding) = coulomb_lanes::<F, M, L>(trial, contacts.slip_velocity, limit, slide);
-    let mut kept = displacement;
-    if limited && sliding.contains(&true) {
-        let longest = limit / Lanes::splat(parameters.stiffness());
-        let length_squared = displacement.norm_squared();
-        let capped = displacement * (longest * length_squared.map(M::inv_sqrt));
-        let too_long = (longest * longest).less(length_squared);
-        let cap = lanes(|l| sliding[l] && too_long[l]);
-        kept = LaneVec::select(cap, capped, displacement);
-    }
-    TangentialLanesOutput {
-        force,
-        states: lanes(|l| SpringDisplacement {
-            displacement: kept.lane(l),
-        }),
-        sliding,
-    }
-}
-
 macro_rules! stored_spring_model {
     ($(#[$doc:meta])* $name:ident, $slide:expr, $limited:expr) => {
         $(#[$doc])*
@@ -141,15 +91,6 @@ macro_rules! stored_spring_model {
                 contact: &TangentialInput<F>,
             ) -> TangentialOutput<F, SpringDisplacement<F>> {
                 stored_spring_step::<F, M>(&self.0, state, contact, $slide, $limited)
-            }
-
-            #[inline(always)]
-            fn force_lanes<M: MathBackend<F>, const L: usize>(
-                &self,
-                states: &[SpringDisplacement<F>; L],
-                contacts: &TangentialLanes<F, L>,
-            ) -> TangentialLanesOutput<F, SpringDisplacement<F>, L> {
-                stored_spring_lanes::<F, M, L>(&self.0, states, contacts, $slide, $limited)
             }
 
             fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {

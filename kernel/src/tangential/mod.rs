@@ -27,7 +27,6 @@ pub use stateless::{Stateless, elapsed_contact_time};
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError, non_negative, positive};
 use crate::float::Float;
-use crate::lanes::{LaneVec, Lanes, Mask, lanes};
 use crate::normal::NormalOscillator;
 use crate::vector::Vec3;
 
@@ -45,7 +44,7 @@ impl ContactState for () {
 }
 
 /// What a tangential slot sees of one contact at one step.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TangentialInput<F> {
     /// Unit normal from body i to body j.
     pub normal: Vec3<F>,
@@ -65,7 +64,7 @@ pub struct TangentialInput<F> {
 }
 
 /// What a tangential slot returns for one step.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TangentialOutput<F, S> {
     /// Tangential force on body j (the force on i is its negative).
     pub force: Vec3<F>,
@@ -73,54 +72,6 @@ pub struct TangentialOutput<F, S> {
     pub state: S,
     /// True when the contact slid this step (the Coulomb limit was active).
     pub sliding: bool,
-}
-
-/// What a tangential slot sees of `L` contacts at one step, one per lane (the fields of
-/// [`TangentialInput`]).
-#[derive(Clone, Copy, Debug)]
-pub struct TangentialLanes<F: Float, const L: usize> {
-    /// Unit normals from body i to body j.
-    pub normal: LaneVec<F, L>,
-    /// Slip velocities of the contact points, j relative to i, in the tangent planes.
-    pub slip_velocity: LaneVec<F, L>,
-    /// Normal forces on j along the normals (positive repulsive).
-    pub normal_force: Lanes<F, L>,
-    /// Overlaps `delta > 0`.
-    pub overlap: Lanes<F, L>,
-    /// Rates of change of the overlaps, `-v_n`.
-    pub approach_rate: Lanes<F, L>,
-    /// The contacts' normal oscillators.
-    pub oscillator: [NormalOscillator<F>; L],
-    /// The time step (the same for every lane).
-    pub time_step: F,
-}
-
-impl<F: Float, const L: usize> TangentialLanes<F, L> {
-    /// Lane `l`'s contact.
-    #[inline(always)]
-    pub fn lane(&self, l: usize) -> TangentialInput<F> {
-        TangentialInput {
-            normal: self.normal.lane(l),
-            slip_velocity: self.slip_velocity.lane(l),
-            normal_force: self.normal_force.0[l],
-            overlap: self.overlap.0[l],
-            approach_rate: self.approach_rate.0[l],
-            oscillator: self.oscillator[l],
-            time_step: self.time_step,
-        }
-    }
-}
-
-/// What a tangential slot returns for `L` contacts, one per lane (the fields of
-/// [`TangentialOutput`]).
-#[derive(Clone, Copy, Debug)]
-pub struct TangentialLanesOutput<F: Float, S, const L: usize> {
-    /// Tangential forces on body j.
-    pub force: LaneVec<F, L>,
-    /// The states to keep.
-    pub states: [S; L],
-    /// Which contacts slid.
-    pub sliding: Mask<L>,
 }
 
 /// A tangential force law: the second slot of a [`ContactLaw`](crate::ContactLaw).
@@ -138,25 +89,6 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
         state: &Self::State,
         contact: &TangentialInput<F>,
     ) -> TangentialOutput<F, Self::State>;
-
-    /// `L` contacts side by side: lane `l` must be exactly, to the bit, what
-    /// [`TangentialModel::force`] gives for `states[l]` and `contacts.lane(l)`. The default runs
-    /// `force` lane by lane; the stored-spring laws override it with a form that takes no
-    /// branch on the data (see [`crate::lanes`]). A scene evaluates its touching pairs this way.
-    #[inline(always)]
-    fn force_lanes<M: MathBackend<F>, const L: usize>(
-        &self,
-        states: &[Self::State; L],
-        contacts: &TangentialLanes<F, L>,
-    ) -> TangentialLanesOutput<F, Self::State, L> {
-        let outputs: [TangentialOutput<F, Self::State>; L] =
-            lanes(|l| self.force::<M>(&states[l], &contacts.lane(l)));
-        TangentialLanesOutput {
-            force: LaneVec::from_fn(|l| outputs[l].force),
-            states: lanes(|l| outputs[l].state),
-            sliding: lanes(|l| outputs[l].sliding),
-        }
-    }
 
     /// Largest stable explicit time step of the tangential mode, for a contact with the given normal
     /// oscillator and tangential effective mass (`2/7 m*` for rotating solid spheres, `m*` without
@@ -224,26 +156,6 @@ impl<F: Float> TangentialParameters<F> {
         -(displacement * self.stiffness) - contact.slip_velocity * self.dashpot(&contact.oscillator)
     }
 
-    /// [`TangentialParameters::limit`] lane by lane.
-    #[inline(always)]
-    pub(crate) fn limit_lanes<const L: usize>(
-        &self,
-        contacts: &TangentialLanes<F, L>,
-    ) -> Lanes<F, L> {
-        Lanes::splat(self.friction) * contacts.normal_force.abs()
-    }
-
-    /// [`TangentialParameters::trial_force`] lane by lane.
-    #[inline(always)]
-    pub(crate) fn trial_force_lanes<const L: usize>(
-        &self,
-        displacement: LaneVec<F, L>,
-        contacts: &TangentialLanes<F, L>,
-    ) -> LaneVec<F, L> {
-        let dashpot = Lanes::from_fn(|l| self.dashpot(&contacts.oscillator[l]));
-        -(displacement * Lanes::splat(self.stiffness)) - contacts.slip_velocity * dashpot
-    }
-
     /// The trial force for `displacement` put through the Coulomb slider: the step every
     /// frictional law shares once it knows its displacement. Returns the force and whether the
     /// contact slid.
@@ -274,30 +186,6 @@ pub(crate) enum Slide {
     /// Against the slip velocity (Tsuji et al.; Model C). Falls back to the trial force's direction
     /// when there is no slip, so the force stays bounded.
     AgainstSlip,
-}
-
-/// [`coulomb`] lane by lane, without a branch on the data: every lane's sliding force is
-/// computed and then chosen, with the same operations, so the same bits.
-#[inline(always)]
-pub(crate) fn coulomb_lanes<F: Float, M: MathBackend<F>, const L: usize>(
-    trial: LaneVec<F, L>,
-    slip: LaneVec<F, L>,
-    limit: Lanes<F, L>,
-    slide: Slide,
-) -> (LaneVec<F, L>, Mask<L>) {
-    let sticking = trial.norm_squared().less_or_equal(limit * limit);
-    let direction = match slide {
-        Slide::AgainstSlip => {
-            let no_slip = slip.norm_squared().less(Lanes::splat(F::MIN_POSITIVE));
-            LaneVec::select(no_slip, trial, -slip)
-        }
-        Slide::AlongTrial => trial,
-    };
-    let limited = direction * (limit * direction.norm_squared().map(M::inv_sqrt));
-    (
-        LaneVec::select(sticking, trial, limited),
-        lanes(|l| !sticking[l]),
-    )
 }
 
 /// The Coulomb slider: the trial force if it is within `limit`, else a force of magnitude `limit`
