@@ -1,5 +1,5 @@
 //! Closed-form results the kernel is checked against. Plain `f64` with `std` math, written from
-//! the formulas in REFERENCE.md and the cited papers, never calling the kernel.
+//! the formulas in docs/physics.md and the cited papers, never calling the kernel.
 
 use std::f64::consts::PI;
 

@@ -184,7 +184,7 @@ pub struct Rebound {
     pub rebound_angle_deg: f64,
 }
 
-/// The Kharaz oblique impact (REFERENCE 4.2): a sphere of `radius` and `density` hitting the floor
+/// The Kharaz oblique impact (docs/physics.md, section 5.2): a sphere of `radius` and `density` hitting the floor
 /// at `speed` and `angle_deg` from its normal, integrated at `dt = t_c / steps_per_contact`.
 ///
 /// # Panics

@@ -6,6 +6,7 @@ pub mod analytic;
 pub mod data;
 pub mod impact;
 pub mod plot;
+pub mod precision;
 pub mod scene;
 pub mod strategies;
 pub mod validation;

@@ -1,27 +1,25 @@
-//! The std wrapper around the kernel's allocation-free scene: owns the buffers, builds the
-//! reference packing (REFERENCE-style column of spheres on a floor), and writes it for LAMMPS.
+//! The std wrapper around the scene crate's allocation-free [`Scene`]: owns the buffers, builds
+//! the reference packing (a column of spheres on a floor), and writes it for LAMMPS.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
 use rayon::prelude::*;
-use soft_sphere::scene::{
-    Candidate, ContactSlots, Domain, Executor, PairResult, Scene, SceneBuffers, SceneError, Serial,
-    StepInput, StepStats, WallSet,
-};
-use soft_sphere::{
-    ContactError, ContactState, Float, MathBackend, NormalModel, Rotation, Sphere, TangentialModel,
-    Vec3,
+use soft_sphere::{CheckedSphere, Float, Law, Sphere, Vec3};
+use soft_sphere_scene::{
+    Domain, Executor, ListEntry, PairResult, Parking, Scene, SceneBuffers, SceneError, Serial,
+    SphereEntry, StepError, StepInput, StepStats, WallEntry, WallSet,
 };
 
-/// Contacts a sphere can own (monodisperse packings have at most 12 neighbours).
-pub const SLOTS: usize = 16;
+/// Stored contacts a sphere can own at a list rebuild (monodisperse packings have at most 12
+/// neighbours).
+pub const PARKING: usize = 16;
 
 /// Verlet-list room per sphere: a dense monodisperse packing with a skin of a tenth of a
-/// diameter lists about 4 pairs per sphere; 8 leaves room for looser skins and denser beds.
+/// diameter lists about 4.5 pairs per sphere; 8 leaves room for looser skins and denser beds.
 pub const CANDIDATES_PER_SPHERE: usize = 8;
 
-/// A rayon thread pool as the kernel scene's [`Executor`]: each phase of a step (pairs, walls,
+/// A rayon thread pool as the scene's [`Executor`]: each phase of a step (pairs, walls,
 /// integration) is spread over the pool's threads.
 #[derive(Debug)]
 pub struct Threads {
@@ -50,50 +48,60 @@ impl Executor for Threads {
     }
 }
 
-/// A scene and all its buffers.
+/// A scene of law `L` with walls `W`, and all its buffers.
 #[derive(Clone, Debug)]
-pub struct OwnedScene<F: Float, S> {
+pub struct OwnedScene<L: Law, W> {
     /// The spheres.
-    pub spheres: Vec<Sphere<F>>,
-    forces: Vec<Vec3<F>>,
-    torques: Vec<Vec3<F>>,
-    slots: Vec<ContactSlots<S, SLOTS>>,
-    wall_states: Vec<S>,
-    next_wall_states: Vec<S>,
-    walls: usize,
-    cell_start: Vec<u32>,
-    cell_entries: Vec<u32>,
-    candidates: Vec<Candidate>,
-    states: Vec<S>,
-    next_states: Vec<S>,
-    anchors: Vec<Vec3<F>>,
-    pair_results: Vec<PairResult<F>>,
+    pub spheres: Vec<CheckedSphere<L::Float>>,
+    /// The walls.
+    pub walls: W,
+    entries: Vec<SphereEntry<L::Float>>,
+    cells: Vec<u32>,
+    list: Vec<ListEntry<L::State>>,
+    parking: Vec<Parking<L::State, PARKING>>,
+    wall_states: Vec<WallEntry<L::State>>,
+    pair_results: Vec<PairResult<L::Float>>,
     /// The box.
-    pub domain: Domain<F>,
-    largest_diameter: F,
-    skin: F,
+    pub domain: Domain<L::Float>,
+    largest_diameter: L::Float,
+    skin: L::Float,
     /// Verlet-list builds of the last run.
     pub list_builds: usize,
 }
 
-impl<F: Float, S: ContactState> OwnedScene<F, S> {
-    /// A scene of `spheres` in `domain` with `walls` walls, a Verlet list with `skin`, and
-    /// spheres no larger than `largest_diameter`. The spheres are reordered along the cell grid
-    /// (z, then y, then x) so that neighbours sit close in memory, as LAMMPS's atom sort does.
+impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
+    /// A scene of `spheres` in `domain` with `walls`, a Verlet list with `skin`, and spheres no
+    /// larger than `largest_diameter`. The spheres are checked, then reordered along the cell
+    /// grid (z, then y, then x) so that neighbours sit close in memory, as LAMMPS's atom sort
+    /// does.
     ///
     /// # Errors
-    /// The kernel's [`SceneError`].
+    /// The scene's [`SceneError`]; [`SceneError::Sphere`] names the sphere by its index in
+    /// `spheres`.
     pub fn new(
-        mut spheres: Vec<Sphere<F>>,
-        domain: Domain<F>,
-        (largest_diameter, skin): (F, F),
-        walls: usize,
+        spheres: Vec<Sphere<L::Float>>,
+        domain: Domain<L::Float>,
+        (largest_diameter, skin): (L::Float, L::Float),
+        walls: W,
     ) -> Result<Self, SceneError> {
-        Scene::<F, S, SLOTS>::check_spheres(&spheres)?;
+        let mut spheres = spheres
+            .into_iter()
+            .enumerate()
+            .map(|(index, s)| {
+                CheckedSphere::new(s).map_err(|error| SceneError::Sphere { index, error })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
         let n = spheres.len();
-        let cells = Scene::<F, S, SLOTS>::cells_needed(&domain, (largest_diameter, skin))?;
+        let capacity = CANDIDATES_PER_SPHERE * n + 64;
+        let sizes = Scene::<L, W, PARKING>::buffer_sizes(
+            &domain,
+            (largest_diameter, skin),
+            n,
+            capacity,
+            true,
+        )?;
         let cell = (largest_diameter + skin).to_f64();
-        let key = |s: &Sphere<F>| {
+        let key = |s: &CheckedSphere<L::Float>| {
             let p = (s.position - domain.lower)
                 .to_array()
                 .map(|x| (x.to_f64() / cell) as i64);
@@ -102,19 +110,13 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
         spheres.sort_by_key(key);
         Ok(Self {
             spheres,
-            forces: vec![Vec3::ZERO; n],
-            torques: vec![Vec3::ZERO; n],
-            slots: vec![ContactSlots::default(); n],
-            wall_states: vec![S::default(); n * walls],
-            next_wall_states: vec![S::default(); n * walls],
             walls,
-            cell_start: vec![0; cells + 1],
-            cell_entries: vec![0; n],
-            candidates: vec![Candidate::default(); CANDIDATES_PER_SPHERE * n + 64],
-            states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
-            next_states: vec![S::default(); CANDIDATES_PER_SPHERE * n + 64],
-            anchors: vec![Vec3::ZERO; n],
-            pair_results: vec![PairResult::default(); CANDIDATES_PER_SPHERE * n + 64],
+            entries: vec![SphereEntry::default(); sizes.spheres],
+            cells: vec![0; sizes.cells],
+            list: vec![ListEntry::default(); sizes.list],
+            parking: vec![Parking::default(); sizes.parking],
+            wall_states: vec![WallEntry::default(); sizes.walls],
+            pair_results: vec![PairResult::default(); sizes.pair_results],
             domain,
             largest_diameter,
             skin,
@@ -124,25 +126,16 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
 
     /// Runs `steps` steps, calling `each` with every step's totals.
     ///
-    /// Each call starts the kernel's scene afresh (the list is rebuilt, the stored springs carry
-    /// over).
+    /// Each call starts the scene afresh (the list is rebuilt, the stored springs carry over).
     ///
     /// # Errors
-    /// The first contact error; [`ContactError::HistoryFull`] past [`SLOTS`] contacts; the error
-    /// of an invalid sphere.
-    pub fn run<N, T, M, R, W>(
+    /// The first [`StepError`].
+    pub fn run(
         &mut self,
-        input: &StepInput<'_, F, N, T, M, R, W>,
+        input: &StepInput<'_, L>,
         steps: usize,
-        each: impl FnMut(usize, &StepStats<F>),
-    ) -> Result<(), ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-        W: WallSet<F>,
-    {
+        each: impl FnMut(usize, &StepStats<L::Float>),
+    ) -> Result<(), StepError> {
         self.run_on(input, steps, &Serial, each)
     }
 
@@ -151,61 +144,57 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
     ///
     /// # Errors
     /// As [`OwnedScene::run`].
-    pub fn run_on<N, T, M, R, W, E>(
+    pub fn run_on<E: Executor>(
         &mut self,
-        input: &StepInput<'_, F, N, T, M, R, W>,
+        input: &StepInput<'_, L>,
         steps: usize,
         executor: &E,
-        mut each: impl FnMut(usize, &StepStats<F>),
-    ) -> Result<(), ContactError>
-    where
-        N: NormalModel<F>,
-        T: TangentialModel<F, State = S>,
-        M: MathBackend<F>,
-        R: Rotation,
-        W: WallSet<F>,
-        E: Executor,
-    {
+        mut each: impl FnMut(usize, &StepStats<L::Float>),
+    ) -> Result<(), StepError> {
         let buffers = SceneBuffers {
-            forces: &mut self.forces,
-            torques: &mut self.torques,
-            slots: &mut self.slots,
-            wall_states: &mut self.wall_states,
-            next_wall_states: &mut self.next_wall_states,
-            cell_start: &mut self.cell_start,
-            cell_entries: &mut self.cell_entries,
-            candidates: &mut self.candidates,
-            states: &mut self.states,
-            next_states: &mut self.next_states,
-            anchors: &mut self.anchors,
+            spheres: &mut self.entries,
+            cells: &mut self.cells,
+            list: &mut self.list,
+            parking: &mut self.parking,
+            walls: &mut self.wall_states,
             pair_results: &mut self.pair_results,
         };
-        // The domain and buffers were checked by `new`; a sphere made non-finite by an earlier
-        // run's overflow is reported as the contact error it is.
-        let mut scene = match Scene::new(
+        let mut scene = Scene::new(
             self.domain,
             (self.largest_diameter, self.skin),
             &mut self.spheres,
             buffers,
-            self.walls,
-        ) {
-            Ok(scene) => scene,
-            Err(SceneError::Sphere { error, .. }) => return Err(error),
-            Err(other) => unreachable!("domain and buffers checked by OwnedScene::new: {other}"),
-        };
+            self.walls.clone(),
+        )
+        .unwrap_or_else(|error| unreachable!("checked by OwnedScene::new: {error}"));
+        let mut outcome = Ok(());
         for step in 0..steps {
-            let stats = scene.step_on(input, executor)?;
-            each(step, &stats);
+            match scene.step_on(input, executor) {
+                Ok(stats) => each(step, &stats),
+                Err(error) => {
+                    outcome = Err(error);
+                    break;
+                }
+            }
         }
         self.list_builds = scene.list_builds();
-        Ok(())
+        self.walls = scene.walls().clone();
+        outcome
+    }
+
+    /// The spheres, unchecked.
+    pub fn plain_spheres(&self) -> Vec<Sphere<L::Float>> {
+        self.spheres.iter().map(|s| s.into_inner()).collect()
     }
 
     /// Sets every velocity and spin to zero (keeps the contacts' stored springs).
     pub fn stop(&mut self) {
         for s in &mut self.spheres {
-            s.velocity = Vec3::ZERO;
-            s.angular_velocity = Vec3::ZERO;
+            let stopped = s.update(|s| {
+                s.velocity = Vec3::ZERO;
+                s.angular_velocity = Vec3::ZERO;
+            });
+            debug_assert!(stopped.is_ok(), "zero velocities keep a sphere valid");
         }
     }
 
@@ -223,7 +212,7 @@ impl<F: Float, S: ContactState> OwnedScene<F, S> {
     }
 }
 
-/// The reference scene of issue 5: monodisperse spheres in a column periodic in x and y on a
+/// The reference scene: monodisperse spheres in a column periodic in x and y on a
 /// floor at z = 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Column {

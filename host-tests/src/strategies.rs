@@ -1,4 +1,4 @@
-//! Bounded physical input strategies for the property tests (REFERENCE-style collisions), as
+//! Bounded physical input strategies for the property tests, as
 //! free functions, and the property-test configuration.
 //!
 //! Cases are generated in `f64` and converted to the precision under test, so that f32 and f64

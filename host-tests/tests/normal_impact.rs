@@ -1,4 +1,4 @@
-//! Normal impact against the analytic linear spring-dashpot solution (REFERENCE 2 and 4.1):
+//! Normal impact against the analytic linear spring-dashpot solution (docs/physics.md, sections 2 and 5.1):
 //! rebound ratio e, duration t_c, peak overlap, and the clamped-force restitution of
 //! Schwager & Poeschel (2007).
 
@@ -72,7 +72,7 @@ fn free_impact_rebounds_with_e_and_lasts_t_c() {
 
 #[test]
 fn clamped_impact_matches_schwager_poeschel() {
-    // The published figures (REFERENCE 2): 0.5 -> 0.5503, 0.9 -> 0.9020.
+    // The published figures (docs/physics.md, section 2): 0.5 -> 0.5503, 0.9 -> 0.9020.
     assert!((analytic::clamped_restitution(0.5) - 0.5503).abs() < 5e-5);
     assert!((analytic::clamped_restitution(0.9) - 0.9020).abs() < 5e-5);
     for e in RESTITUTIONS {

@@ -1,4 +1,4 @@
-//! Property tests (issue 4): for random binary collisions in range (`host_tests::strategies`),
+//! Property tests: for random binary collisions in range (`host_tests::strategies`),
 //! every law in f32 and f64 keeps the Coulomb limit, never creates energy, is symmetric bit for
 //! bit, conserves momentum, is frame invariant and deterministic; f32 tracks f64 and micromath
 //! tracks libm within stated bounds. `PROPTEST_CASES` sets the case count (default 64 per
@@ -7,6 +7,7 @@
 //! Each property is a generic function; `each_law!` runs it for every tangential law and
 //! `for_both_precisions!` instantiates it as an f32 and an f64 proptest.
 
+use host_tests::precision::{bits, epsilon};
 use host_tests::strategies::{Collision, collision, config, log_uniform, unit_vector};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -180,7 +181,7 @@ where
     // measures it). The slowest separation here is e^-2 of the approach speed (clamped, e = 0).
     let extent = (i.radius + j.radius).to_f64();
     let slowest_step = 0.1 * c.speed * dt.seconds().to_f64();
-    if slowest_step < ulps_per_step * F::EPSILON.to_f64() * extent {
+    if slowest_step < ulps_per_step * epsilon::<F>() * extent {
         return Err(TestCaseError::reject(
             "the precision cannot resolve one step's motion at these coordinates",
         ));
@@ -193,7 +194,7 @@ where
         }
     };
     let mut trace = Trace {
-        ulps_per_step: slowest_step / (F::EPSILON.to_f64() * extent),
+        ulps_per_step: slowest_step / (epsilon::<F>() * extent),
         momentum_before: momenta(&[i, j]),
         kinetic_before: energy(&i, &j),
         ..Trace::default()
@@ -267,7 +268,7 @@ macro_rules! each_law {
     }};
 }
 
-/// The laws the talk calls correct (and frictionless contacts): the energy property must hold.
+/// The laws Elghannay & Tafti call correct (and frictionless contacts): the energy property must hold.
 macro_rules! each_sound_law {
     ($property:ident, $F:ty, $($arg:expr),*) => {{
         $property::<$F, _>("frictionless", |_| Frictionless, $($arg),*)?;
@@ -298,7 +299,7 @@ macro_rules! for_both_precisions {
 
 /// Rounding margin of the Coulomb check: 64 ulp of the precision.
 fn rounding<F: Float>() -> f64 {
-    64.0 * F::EPSILON.to_f64()
+    64.0 * epsilon::<F>()
 }
 
 // 1. Coulomb ----------------------------------------------------------------------------------
@@ -392,10 +393,7 @@ fn swap_negates_for<F: Float, T: TangentialModel<F>>(
     let dt = step_for(&law, m_star);
     let (mut ij, mut ji) = (T::State::default(), T::State::default());
     // Bit for bit, except that a zero may carry either sign (-0 == +0).
-    let bits = |v: Vec3<F>| {
-        v.to_array()
-            .map(|x| if x == F::ZERO { 0 } else { x.to_bits_u64() })
-    };
+    let bits = |v: Vec3<F>| v.to_array().map(|x| if x == F::ZERO { 0 } else { bits(x) });
     for _ in 0..MAX_STEPS {
         let forward = law.sphere_sphere(&i, &j, &mut ij, dt).unwrap();
         let backward = law.sphere_sphere(&j, &i, &mut ji, dt).unwrap();
@@ -428,7 +426,7 @@ where
     let (p0, l0, p_scale, l_scale) = trace.momentum_before;
     let (p1, l1, _, _) = momenta(&after);
     // Each step adds rounding of order eps to every sum; allow it to accumulate over the steps.
-    let tolerance = 1e3 * F::EPSILON.to_f64();
+    let tolerance = 1e3 * epsilon::<F>();
     let dp = norm([p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]]) / p_scale;
     let dl = norm([l1[0] - l0[0], l1[1] - l0[1], l1[2] - l0[2]]) / l_scale;
     prop_assert!(dp <= tolerance, "{name}: linear momentum changed by {dp:e}");
@@ -506,7 +504,7 @@ fn frame_invariant_for<F: Float, T: TangentialModel<F>>(
     // Rounding bound: positions carry eps (|shift| + radii), which the overlap sees relative to
     // its depth; velocities and the rest add a few eps.
     let extent = norm(*shift) * c.first.radius + c.first.radius + c.second.radius;
-    let tolerance = 256.0 * F::EPSILON.to_f64() * (1.0 + extent / depth);
+    let tolerance = 256.0 * epsilon::<F>() * (1.0 + extent / depth);
     for (x, y, what) in [
         (a.force_on_j(), b.force_on_j(), "force"),
         (a.torque_on_i, b.torque_on_i, "torque on i"),
@@ -623,7 +621,7 @@ for_both_precisions!(same_inputs_same_bits, several_collisions(), determinism);
 
 // 2b. Energy of Models A, B and C: the same search, reported --------------------------------
 
-/// Runs the energy search for the laws the talk calls wrong with a fixed seed and reports the
+/// Runs the energy search for the laws Elghannay & Tafti call wrong with a fixed seed and reports the
 /// largest gains it finds. A counterexample is a documented result (README), not a failure; the
 /// test asserts what was found so that a change in it is noticed.
 #[test]

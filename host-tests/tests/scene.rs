@@ -1,14 +1,17 @@
-//! The kernel's scene runner (issue 5): the cell grid and Verlet list find exactly the touching
+//! The scene crate: the cell grid and Verlet list find exactly the touching
 //! pairs a brute-force search finds, across periodic boundaries; an isolated periodic gas keeps its
 //! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity; the
 //! stored springs survive Verlet-list rebuilds; bad spheres and failed steps have defined answers.
 
 use host_tests::scene::{Column, OwnedScene, Threads};
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::scene::{Domain, Integrator, NoWalls, SceneError, StepInput, WallSet};
 use soft_sphere::{
-    ContactError, ContactLaw, Interaction, Libm, LinearSpringDashpot, ModelAA, Rotating, Sphere,
+    CheckedSphere, ContactError, ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere,
     SpringDisplacement, TangentialParameters, Vec3, Wall,
+};
+use soft_sphere_scene::{
+    Domain, Integrator, ListEntry, NoWalls, Parking, Scene, SceneBuffers, SceneError, SphereEntry,
+    StepError, StepInput, StepStats, WallEntry,
 };
 
 const DIAMETER: f64 = 1e-3;
@@ -49,16 +52,14 @@ fn law() -> Law {
 type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
 
 /// One law for pairs and walls, stepped at `dt` for a pair of these spheres' mass.
-fn input<'l, W: WallSet<f64>>(
-    law: &'l Law,
-    walls: &'l W,
+fn input(
+    law: &Law,
     (gravity, dt, sphere_mass): (Vec3<f64>, f64, f64),
     integrator: Integrator,
-) -> StepInput<'l, f64, LinearSpringDashpot<f64>, ModelAA<f64>, Libm, Rotating, W> {
+) -> StepInput<'_, Law> {
     StepInput {
         law,
         wall_law: law,
-        walls,
         gravity,
         time_step: law.time_step(dt, sphere_mass / 2.0).unwrap(),
         integrator,
@@ -66,7 +67,7 @@ fn input<'l, W: WallSet<f64>>(
 }
 
 /// Touching pairs by brute force with the minimum image in x and y.
-fn brute_force_pairs(spheres: &[Sphere<f64>], lx: f64, ly: f64) -> usize {
+fn brute_force_pairs(spheres: &[CheckedSphere<f64>], lx: f64, ly: f64) -> usize {
     let mut count = 0;
     for a in 0..spheres.len() {
         for b in a + 1..spheres.len() {
@@ -87,16 +88,12 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
     let law = law();
     for seed in 1..6 {
         let (spheres, domain) = gas(300, seed);
-        let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 0).unwrap();
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
         let m = scene.spheres[0].mass;
-        let input = input(
-            &law,
-            &NoWalls,
-            (Vec3::ZERO, 2e-6, m),
-            Integrator::SymplecticEuler,
-        );
+        let input = input(&law, (Vec3::ZERO, 2e-6, m), Integrator::SymplecticEuler);
         for _ in 0..50 {
-            let before: Vec<Sphere<f64>> = scene.spheres.clone();
+            let before = scene.spheres.clone();
             let mut found = 0;
             scene
                 .run(&input, 1, |_, stats| found = stats.pair_contacts)
@@ -112,10 +109,11 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
     let law = law();
     let run = |integrator| {
         let (spheres, domain) = gas(300, 9);
-        let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 0).unwrap();
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
         let m = scene.spheres[0].mass;
-        let input = input(&law, &NoWalls, (Vec3::ZERO, 2e-6, m), integrator);
-        let momentum = |s: &[Sphere<f64>]| {
+        let input = input(&law, (Vec3::ZERO, 2e-6, m), integrator);
+        let momentum = |s: &[CheckedSphere<f64>]| {
             s.iter()
                 .fold(Vec3::ZERO, |p, s| p + s.velocity * s.mass)
                 .to_array()
@@ -161,10 +159,11 @@ fn both_integrators_settle_a_bed_on_the_floor() {
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let (spheres, domain) = gas(150, 3);
         let potential: f64 = spheres.iter().map(|s| s.mass * 9.81 * s.position.z).sum();
-        let mut scene = OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 1).unwrap();
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
         let m = scene.spheres[0].mass;
         let gravity = Vec3::new(0.0, 0.0, -9.81);
-        let input = input(&law, &floor, (gravity, 4e-6, m), integrator);
+        let input = input(&law, (gravity, 4e-6, m), integrator);
         scene.run(&input, 40_000, |_, _| {}).unwrap();
         let lowest = scene
             .spheres
@@ -243,15 +242,11 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
 
     // The scene: a wide skin (one list build), no skin (a build every step), and a fresh scene
     // every step (the history parked and found again each time).
-    let input = input(
-        &law,
-        &NoWalls,
-        (Vec3::ZERO, 2e-6, mass),
-        Integrator::SymplecticEuler,
-    );
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
         let mut scene =
-            OwnedScene::<f64, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), 0).unwrap();
+            OwnedScene::<Law, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), NoWalls)
+                .unwrap();
         assert!(scene.spheres[0].position.x < 1e-3, "sorted: A is sphere 0");
         for _ in 0..calls {
             scene.run(&input, steps / calls, |_, _| {}).unwrap();
@@ -280,55 +275,164 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
     for (spoil, error) in cases {
         let mut spheres = oblique_pair();
         spoil(&mut spheres[1]);
-        let sorted_index = usize::from(spheres[1].position.x < spheres[0].position.x);
-        let result = OwnedScene::<f64, SpringDisplacement<f64>>::new(
-            spheres,
+        let result = OwnedScene::<Law, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls);
+        assert_eq!(result.err(), Some(SceneError::Sphere { index: 1, error }));
+    }
+}
+
+/// Fresh buffers for the two spheres of [`oblique_pair`] in [`open_box`], with `walls` wall
+/// entries, checked against `W`'s count by the scene.
+struct PairBuffers {
+    entries: [SphereEntry<f64>; 2],
+    cells: Vec<u32>,
+    list: [ListEntry<SpringDisplacement<f64>>; 4],
+    parking: [Parking<SpringDisplacement<f64>, 4>; 2],
+    walls: Vec<WallEntry<SpringDisplacement<f64>>>,
+}
+
+impl PairBuffers {
+    fn new(walls: usize) -> Self {
+        let sizes =
+            Scene::<Law, NoWalls, 4>::buffer_sizes(&open_box(), (DIAMETER, 0.0), 2, 4, false)
+                .unwrap();
+        Self {
+            entries: Default::default(),
+            cells: vec![0; sizes.cells],
+            list: Default::default(),
+            parking: Default::default(),
+            walls: vec![WallEntry::default(); walls],
+        }
+    }
+
+    fn buffers(&mut self) -> SceneBuffers<'_, f64, SpringDisplacement<f64>, 4> {
+        SceneBuffers {
+            spheres: &mut self.entries,
+            cells: &mut self.cells,
+            list: &mut self.list,
+            parking: &mut self.parking,
+            walls: &mut self.walls,
+            pair_results: &mut [],
+        }
+    }
+}
+
+fn checked_pair() -> Vec<CheckedSphere<f64>> {
+    oblique_pair()
+        .into_iter()
+        .map(|s| CheckedSphere::new(s).unwrap())
+        .collect()
+}
+
+#[test]
+fn buffers_that_do_not_fit_the_walls_are_refused() {
+    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    let two_walls = [
+        floor[0],
+        Wall::new(Vec3::new(0.0, 0.0, 0.006), Vec3::new(0.0, 0.0, -1.0)).unwrap(),
+    ];
+    // One entry per sphere and wall: two spheres and one wall need two, two walls four.
+    for (entries, refused_with_one, refused_with_two) in [
+        (0, true, true),
+        (2, false, true),
+        (4, true, false),
+        (3, true, true),
+    ] {
+        let mut spheres = checked_pair();
+        let mut b = PairBuffers::new(entries);
+        let one = Scene::<Law, _, 4>::new(
             open_box(),
-            (DIAMETER, 1e-4),
-            0,
+            (DIAMETER, 0.0),
+            &mut spheres,
+            b.buffers(),
+            floor,
         );
         assert_eq!(
-            result.err(),
-            Some(SceneError::Sphere {
-                index: 1 - sorted_index,
-                error
-            })
+            one.err() == Some(SceneError::BufferLength),
+            refused_with_one,
+            "{entries} entries, one wall"
+        );
+        let mut spheres = checked_pair();
+        let mut b = PairBuffers::new(entries);
+        let two = Scene::<Law, _, 4>::new(
+            open_box(),
+            (DIAMETER, 0.0),
+            &mut spheres,
+            b.buffers(),
+            two_walls,
+        );
+        assert_eq!(
+            two.err() == Some(SceneError::BufferLength),
+            refused_with_two,
+            "{entries} entries, two walls"
         );
     }
+    // Without walls no entry is needed, and none is accepted.
+    let mut spheres = checked_pair();
+    let mut b = PairBuffers::new(0);
+    assert!(
+        Scene::<Law, _, 4>::new(
+            open_box(),
+            (DIAMETER, 0.0),
+            &mut spheres,
+            b.buffers(),
+            NoWalls
+        )
+        .is_ok()
+    );
 }
 
 #[test]
 fn stored_states_of_pairs_outside_the_scene_are_refused() {
-    use soft_sphere::scene::{Candidate, ContactSlots, Scene, SceneBuffers};
-    let mut spheres = oblique_pair();
-    let domain = open_box();
-    let cells =
-        Scene::<f64, SpringDisplacement<f64>, 4>::cells_needed(&domain, (DIAMETER, 0.0)).unwrap();
-    let mut candidates = [Candidate::default(); 4];
-    // A state left in a slot whose candidate names no pair of these two spheres (0, 0).
-    let mut states = [SpringDisplacement::default(); 4];
-    states[2].displacement.x = 1e-9;
-    let (mut forces, mut torques, mut anchors) =
-        ([Vec3::ZERO; 2], [Vec3::ZERO; 2], [Vec3::ZERO; 2]);
-    let mut slots = [ContactSlots::<_, 4>::default(); 2];
-    let (mut start, mut entries) = (vec![0; cells + 1], [0; 2]);
-    let mut next_states = states;
+    let law = law();
+    let input = input(
+        &law,
+        (Vec3::ZERO, 2e-6, oblique_pair()[0].mass),
+        Integrator::SymplecticEuler,
+    );
+    let mut pair = checked_pair();
+    let mut b = PairBuffers::new(0);
+    {
+        let mut scene = Scene::<Law, _, 4>::new(
+            open_box(),
+            (DIAMETER, 0.0),
+            &mut pair,
+            b.buffers(),
+            NoWalls,
+        )
+        .unwrap();
+        let touched = (0..500).any(|_| scene.step(&input).unwrap().pair_contacts > 0);
+        assert!(touched, "the pair met");
+    }
+    // The list now holds the pair's stored spring. The same two spheres take it back...
+    let mut again = pair.clone();
+    assert!(
+        Scene::<Law, _, 4>::new(
+            open_box(),
+            (DIAMETER, 0.0),
+            &mut again,
+            b.buffers(),
+            NoWalls
+        )
+        .is_ok()
+    );
+    // ... a scene of the first sphere alone does not own it.
+    let cells = b.cells.len() - 1;
     let buffers = SceneBuffers {
-        forces: &mut forces,
-        torques: &mut torques,
-        slots: &mut slots,
-        wall_states: &mut [],
-        next_wall_states: &mut [],
-        cell_start: &mut start,
-        cell_entries: &mut entries,
-        candidates: &mut candidates,
-        states: &mut states,
-        next_states: &mut next_states,
-        anchors: &mut anchors,
+        spheres: &mut b.entries[..1],
+        cells: &mut b.cells[..cells],
+        list: &mut b.list,
+        parking: &mut b.parking[..1],
+        walls: &mut [],
         pair_results: &mut [],
     };
-    let scene = Scene::new(domain, (DIAMETER, 0.0), &mut spheres, buffers, 0);
-    assert_eq!(scene.err(), Some(SceneError::History));
+    let alone = Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut pair[..1],
+        buffers,
+        NoWalls,
+    );
+    assert_eq!(alone.err(), Some(SceneError::History));
 }
 
 #[test]
@@ -338,45 +442,45 @@ fn a_failed_step_leaves_the_scene_as_it_was() {
     // A third sphere on top of the first: its contact has no normal.
     spheres.push(spheres[0]);
     let mass = spheres[0].mass;
-    let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
+    let mut scene =
+        OwnedScene::<Law, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls).unwrap();
     let before = scene.spheres.clone();
-    let input = input(
-        &law,
-        &NoWalls,
-        (Vec3::ZERO, 2e-6, mass),
-        Integrator::SymplecticEuler,
-    );
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     assert_eq!(
         scene.run(&input, 1, |_, _| {}),
-        Err(ContactError::CoincidentCentres)
+        Err(StepError::Contact(ContactError::CoincidentCentres))
     );
     assert_eq!(scene.spheres, before);
 }
 
 #[test]
-fn an_overflowing_step_is_reported_and_the_scene_refuses_to_go_on() {
+fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
     let law = law();
-    let mut spheres = oblique_pair();
-    spheres[0].velocity.x = f64::MAX; // finite, so the scene takes it
-    let mass = spheres[0].mass;
-    let mut scene = OwnedScene::<f64, _>::new(spheres, open_box(), (DIAMETER, 1e-4), 0).unwrap();
-    // Gravity along the velocity pushes it past the largest float in one kick.
+    let mut spheres = checked_pair();
+    // Finite, so the sphere is valid; gravity along it pushes it past the largest float in one
+    // kick.
+    spheres[0].update(|s| s.velocity.x = f64::MAX).unwrap();
+    let before = spheres.clone();
     let gravity = Vec3::new(1e300, 0.0, 0.0);
     let input = input(
         &law,
-        &NoWalls,
-        (gravity, 2e-6, mass),
+        (gravity, 2e-6, before[0].mass),
         Integrator::SymplecticEuler,
     );
-    assert_eq!(
-        scene.run(&input, 1, |_, _| {}),
-        Err(ContactError::NonFiniteResult)
-    );
-    assert!(scene.spheres.iter().any(|s| !s.velocity.x.is_finite()));
-    assert_eq!(
-        scene.run(&input, 1, |_, _| {}),
-        Err(ContactError::NonFiniteInput)
-    );
+    let mut b = PairBuffers::new(0);
+    let mut scene = Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut spheres,
+        b.buffers(),
+        NoWalls,
+    )
+    .unwrap();
+    assert_eq!(scene.step(&input), Err(StepError::Diverged { index: 0 }));
+    // The diverged sphere kept its state; the other one moved.
+    assert_eq!(scene.spheres()[0], before[0]);
+    assert_ne!(scene.spheres()[1], before[1]);
+    assert_eq!(scene.step(&input), Err(StepError::Halted));
 }
 
 #[test]
@@ -388,11 +492,11 @@ fn threads_give_the_same_bits_as_one_thread() {
         let run = |threads: Option<usize>| {
             let (spheres, domain) = gas(2000, 5);
             let mut scene =
-                OwnedScene::<f64, _>::new(spheres, domain, (DIAMETER, 1e-4), 1).unwrap();
+                OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
             let m = scene.spheres[0].mass;
-            let input = input(&law, &floor, (gravity, 4e-6, m), integrator);
+            let input = input(&law, (gravity, 4e-6, m), integrator);
             let mut contacts = Vec::new();
-            let record = |_: usize, s: &soft_sphere::scene::StepStats<f64>| {
+            let record = |_: usize, s: &StepStats<f64>| {
                 contacts.push((s.pair_contacts, s.wall_contacts, s.overlap_sum.to_bits()));
             };
             match threads {

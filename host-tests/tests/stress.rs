@@ -1,4 +1,4 @@
-//! Deterministic numerical stress (issue 4): the step swept past the stability bound, grazing
+//! Deterministic numerical stress: the step swept past the stability bound, grazing
 //! and head-on wall impacts, a sphere resting on a plate and on an incline for 10^6 steps,
 //! extreme but valid parameters, and the stateless law at vanishing damping frequency.
 
@@ -27,7 +27,7 @@ fn kinetic(s: &Sphere<f64>) -> f64 {
         + 0.5 * s.solid_moment_of_inertia() * s.angular_velocity.norm_squared()
 }
 
-/// e_t of the talk's Kharaz impact at 20 deg with `steps` per contact; `Err` when the kernel
+/// e_t of Elghannay & Tafti's Kharaz impact at 20 deg with `steps` per contact; `Err` when the kernel
 /// refuses the step.
 fn kharaz_at<T: TangentialModel<f64>>(tangential: T, steps: f64) -> Result<f64, ParameterError> {
     let law = ContactLaw::new(LinearSpringDashpot::new(1000.0, 0.98).unwrap(), tangential);

@@ -1,17 +1,18 @@
-//! Tangential laws against rigid-body theory, the MFiX DEM05 linear-model reference, the talk's
-//! model comparison (REFERENCE 4.2 and 4.4), and the invariants every law must keep: the Coulomb
+//! Tangential laws against rigid-body theory, the MFiX DEM05 linear-model reference, Elghannay & Tafti's
+//! model comparison (docs/physics.md, sections 5.2 and 5.4), and the invariants every law must keep: the Coulomb
 //! limit, action and reaction bit for bit, and a stored spring that follows a rolling pair.
 
 use host_tests::analytic::rigid_body_oblique;
 use host_tests::data;
 use host_tests::impact::{oblique_rebound, pair_collision};
+use host_tests::precision::{bits, epsilon};
 use soft_sphere::{
     ContactForces, ContactLaw, Float, Frictionless, Interaction, LeverArm, LinearSpringDashpot,
     Micromath, ModelA, ModelAA, ModelB, ModelC, Sphere, SpringDisplacement, Stateless,
     TangentialModel, TangentialParameters, Vec3, effective_mass,
 };
 
-// The talk's Kharaz setup (REFERENCE 4.2).
+// Elghannay & Tafti's Kharaz setup (docs/physics.md, section 5.2).
 const RADIUS: f64 = 2.5e-3;
 const DENSITY: f64 = 2700.0;
 const SPEED: f64 = 3.9;
@@ -66,7 +67,7 @@ macro_rules! for_each_frictional_model {
 #[test]
 fn coulomb_limit_holds_at_every_step_of_oblique_impacts() {
     fn check<F: Float, T: TangentialModel<F>>(name: &str, tangential: T) {
-        let margin = 64.0 * F::EPSILON.to_f64();
+        let margin = 64.0 * epsilon::<F>();
         let law = kharaz::<F, T>(tangential);
         for angle in (1..90).step_by(4) {
             let what = format!("{name} {}-bit at {angle} deg", 8 * size_of::<F>());
@@ -119,7 +120,7 @@ fn coulomb_limit_holds_in_spinning_sphere_pairs() {
     fn check<F: Float, T: TangentialModel<F>>(name: &str, tangential: T) {
         let normal = LinearSpringDashpot::new(F::from_f64(2.0e4), F::from_f64(0.5)).unwrap();
         let law = ContactLaw::new(normal, tangential);
-        let margin = 64.0 * F::EPSILON.to_f64();
+        let margin = 64.0 * epsilon::<F>();
         for case in 0..12 {
             let c = case as f64;
             let f = F::from_f64;
@@ -200,7 +201,7 @@ fn stateless_law_rolls_off_at_five_sevenths_below_the_threshold() {
 
 #[test]
 fn model_aa_matches_the_mfix_linear_reference() {
-    // REFERENCE 4.2: MFiX DEM05 inputs; MFiX integrates at t_c/50 with the contact-plane arm.
+    // docs/physics.md, section 5.2: MFiX DEM05 inputs; MFiX integrates at t_c/50 with the contact-plane arm.
     // Below 5 degrees MFiX's published values sit 1-2.3 % lower in e_t and 4-15 % higher in spin
     // than Model AA (at t_c/50 and at t_c/1000, with either arm); that residual is examined by the
     // validation run, so this check starts at 5 degrees.
@@ -265,7 +266,7 @@ fn the_contact_plane_arm_is_mfixs_arm() {
 
 #[test]
 fn the_talks_model_comparison_is_reproduced() {
-    // REFERENCE 4.4, e = 0.98, k_t/k_n = 0.86, eta_t = 0.
+    // docs/physics.md, section 5.4, e = 0.98, k_t/k_n = 0.86, eta_t = 0.
     fn rebound<T: TangentialModel<f64>>(tangential: T, angle: f64) -> (f64, f64) {
         let r = oblique_rebound(
             &kharaz::<f64, T>(tangential),
@@ -308,7 +309,7 @@ fn the_talks_model_comparison_is_reproduced() {
 
 #[test]
 fn model_c_stays_far_from_the_data() {
-    // REFERENCE 3.1: the literal stateless reading leaves e_t near 0.85-0.96 (up to 65 degrees;
+    // docs/physics.md, section 3.1: the literal stateless reading leaves e_t near 0.85-0.96 (up to 65 degrees;
     // it climbs towards 1 at grazing incidence, 0.984 at 85 degrees).
     let law = kharaz::<f64, _>(ModelC(parameters(860.0, 0.0, FRICTION)));
     for angle in (5..=65).step_by(10) {
@@ -356,7 +357,7 @@ fn swapping_the_pair_negates_forces_bit_for_bit() {
                     break;
                 };
                 touching_steps += 1;
-                let bits = |v: Vec3<F>| v.to_array().map(|x| x.to_bits_u64());
+                let bits = |v: Vec3<F>| v.to_array().map(|x| bits(x));
                 assert_eq!(
                     bits(ij.force_on_j()),
                     bits(ji.force_on_i()),

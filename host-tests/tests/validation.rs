@@ -1,4 +1,4 @@
-//! The validation run's cases (REFERENCE section 4), with the tolerances the `validate` binary
+//! The validation run's cases (docs/physics.md, section 5), with the tolerances the `validate` binary
 //! enforces: this test fails exactly when `cargo run -p host-tests --bin validate` would exit
 //! non-zero.
 
@@ -66,7 +66,7 @@ fn plate_rolls_at_five_sevenths_on_time_for_aa_b_and_the_stateless_law() {
         summary.column("final_velocity_ratio"),
     );
     let index = |m| kharaz::Model::ALL.iter().position(|x| *x == m).unwrap();
-    // Model A's unbounded spring throws the sphere off 5/7 (REFERENCE 4.3) ...
+    // Model A's unbounded spring throws the sphere off 5/7 (docs/physics.md, section 5.3) ...
     assert!((u[index(kharaz::Model::ModelA)] - 5.0 / 7.0).abs() > 0.05);
     // ... and Model C's weak dashpot near zero slip reaches rolling late.
     let theory = 2.0 / (7.0 * 0.7 * 9.81);

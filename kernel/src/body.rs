@@ -7,7 +7,8 @@ use crate::float::{Float, all_finite};
 use crate::vector::Vec3;
 
 /// One sphere at one instant. Plain data: the caller owns it and may change any field between
-/// steps; every contact evaluation checks it (finite fields, positive radius and mass).
+/// steps; [`ContactLaw::sphere_sphere`](crate::ContactLaw::sphere_sphere) checks it at every call
+/// (finite fields, positive radius and mass), a [`CheckedSphere`](crate::CheckedSphere) once.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[repr(C)]
 pub struct Sphere<F> {
@@ -68,13 +69,13 @@ impl<F: Float> Sphere<F> {
 }
 
 /// An infinite plane wall. Spheres live on the side its normal points to. The wall may translate
-/// (its velocity enters the contact's relative velocity); it does not rotate.
+/// (its velocity enters the contact's relative velocity); it does not rotate. Every field is
+/// checked when it is set, so a wall is always valid and contacts never check it again.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wall<F> {
     point: Vec3<F>,
     normal: Vec3<F>,
-    /// Wall velocity (m/s), for moving floors and pistons. Zero by default.
-    pub velocity: Vec3<F>,
+    velocity: Vec3<F>,
 }
 
 impl<F: Float> Wall<F> {
@@ -103,16 +104,34 @@ impl<F: Float> Wall<F> {
         })
     }
 
-    /// The same wall moving with `velocity`.
-    pub fn with_velocity(mut self, velocity: Vec3<F>) -> Self {
+    /// The same wall moving with `velocity` (m/s), for moving floors and pistons (zero by
+    /// default).
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] for a non-finite velocity.
+    pub fn with_velocity(mut self, velocity: Vec3<F>) -> Result<Self, ParameterError> {
+        if !velocity.is_finite() {
+            return Err(ParameterError::NonFinite(Parameter::Wall));
+        }
         self.velocity = velocity;
-        self
+        Ok(self)
     }
 
     /// The same wall, translated so that it passes through `point` (for walls the caller moves).
-    pub fn moved_to(mut self, point: Vec3<F>) -> Self {
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] for a non-finite point.
+    pub fn moved_to(mut self, point: Vec3<F>) -> Result<Self, ParameterError> {
+        if !point.is_finite() {
+            return Err(ParameterError::NonFinite(Parameter::Wall));
+        }
         self.point = point;
-        self
+        Ok(self)
+    }
+
+    /// The wall's velocity (m/s).
+    pub fn velocity(&self) -> Vec3<F> {
+        self.velocity
     }
 
     /// A point on the wall.
@@ -129,12 +148,6 @@ impl<F: Float> Wall<F> {
     #[inline(always)]
     pub fn distance_to(&self, position: Vec3<F>) -> F {
         (position - self.point).dot(self.normal)
-    }
-
-    #[inline(always)]
-    pub(crate) fn is_finite(&self) -> bool {
-        let (p, v) = (self.point, self.velocity);
-        all_finite([p.x, p.y, p.z, v.x, v.y, v.z])
     }
 }
 

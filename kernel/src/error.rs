@@ -12,8 +12,8 @@ pub enum Parameter {
     TangentialStiffness,
     /// Coefficient of restitution `e`.
     Restitution,
-    /// Ratio of tangential to normal damping, `eta_t / eta_n`.
-    TangentialDampingRatio,
+    /// The dashpot ratio `eta_t / eta_n` of tangential to normal dashpot coefficient.
+    DashpotRatio,
     /// Coulomb friction coefficient `mu`.
     Friction,
     /// A mass or effective mass.
@@ -34,10 +34,18 @@ pub enum ParameterError {
     /// The value must be strictly positive (stiffness, mass, radius, time step) or, for a wall
     /// normal, non-zero.
     NotPositive(Parameter),
-    /// The value must be at least zero (friction, tangential damping ratio).
+    /// The value must be at least zero (friction, dashpot ratio).
     Negative(Parameter),
     /// The coefficient of restitution must lie in `[0, 1]`.
     RestitutionOutOfRange,
+    /// No damping ratio up to critical gives this rebound ratio with the attraction clipped
+    /// ([`LinearSpringDashpot::clamped_with_rebound`](crate::LinearSpringDashpot::clamped_with_rebound)).
+    ReboundUnreachable {
+        /// The requested rebound ratio.
+        rebound: f64,
+        /// The lowest a clipped linear dashpot reaches, `exp(-2)`.
+        lowest: f64,
+    },
     /// The time step is at or past the explicit-integration stability limit of the law for the
     /// smallest effective mass the caller declared. `limit` is that bound in seconds (f64 for
     /// display; the law computed it in its own precision).
@@ -56,6 +64,10 @@ impl fmt::Display for ParameterError {
             Self::NotPositive(p) => write!(f, "{p:?} must be positive"),
             Self::Negative(p) => write!(f, "{p:?} must not be negative"),
             Self::RestitutionOutOfRange => write!(f, "restitution must lie in [0, 1]"),
+            Self::ReboundUnreachable { rebound, lowest } => write!(
+                f,
+                "a clipped linear dashpot cannot rebound at {rebound}: the lowest is {lowest}"
+            ),
             Self::TimeStepUnstable { time_step, limit } => write!(
                 f,
                 "time step {time_step:e} s is not below the stability limit {limit:e} s"
@@ -81,7 +93,7 @@ pub enum ContactError {
     CoincidentCentres,
     /// The inputs were finite but the force, torque or new state overflowed.
     NonFiniteResult,
-    /// A new contact needs a slot in a [`ContactHistory`](crate::ContactHistory) that is full.
+    /// A new contact needs room in a [`ContactHistory`](crate::ContactHistory) that is full.
     HistoryFull,
 }
 

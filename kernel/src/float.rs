@@ -57,8 +57,6 @@ pub trait Float:
     const INFINITY: Self;
     /// The smallest positive normal number.
     const MIN_POSITIVE: Self;
-    /// Machine epsilon.
-    const EPSILON: Self;
 
     /// Converts from `f64`, rounding to nearest.
     fn from_f64(value: f64) -> Self;
@@ -68,8 +66,6 @@ pub trait Float:
     fn is_finite(self) -> bool;
     /// Absolute value, by clearing the sign bit.
     fn abs(self) -> Self;
-    /// The IEEE-754 bit pattern widened to `u64`, for bit-exact comparisons.
-    fn to_bits_u64(self) -> u64;
 
     /// The larger of two numbers. With a NaN operand the comparison fails and `other` is returned;
     /// the kernel only calls it on validated numbers.
@@ -96,7 +92,6 @@ macro_rules! impl_float {
             const PI: Self = core::$t::consts::PI;
             const INFINITY: Self = $t::INFINITY;
             const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
-            const EPSILON: Self = $t::EPSILON;
 
             #[inline(always)]
             fn from_f64(value: f64) -> Self {
@@ -113,10 +108,6 @@ macro_rules! impl_float {
             #[inline(always)]
             fn abs(self) -> Self {
                 $t::from_bits(self.to_bits() & !$sign)
-            }
-            #[inline(always)]
-            fn to_bits_u64(self) -> u64 {
-                self.to_bits() as u64
             }
         }
     };

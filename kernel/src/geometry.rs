@@ -2,7 +2,8 @@
 //! velocities, for sphere-sphere and sphere-wall contacts.
 
 use crate::backend::MathBackend;
-use crate::body::{Sphere, Wall};
+use crate::body::Wall;
+use crate::checked::CheckedSphere;
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::vector::Vec3;
@@ -11,7 +12,7 @@ use crate::vector::Vec3;
 /// the torque (the same arm in both keeps the contact energetically passive).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum LeverArm {
-    /// The radius `R` (rigid-body theory, the talk, LAMMPS `gran/hooke`). The default.
+    /// The radius `R` (rigid-body theory, Elghannay & Tafti, LAMMPS `gran/hooke`). The default.
     #[default]
     Radius,
     /// The distance from the centre to the contact plane: the plane of the two spheres'
@@ -34,38 +35,12 @@ pub(crate) struct ContactFrame<F> {
     pub angular_velocity_j: Vec3<F>,
 }
 
-/// Checks one sphere's fields (finiteness first, so the sign tests below never see NaN).
-#[inline(always)]
-pub(crate) fn validate<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
-    if !sphere.is_finite() {
-        Err(ContactError::NonFiniteInput)
-    } else if sphere.radius <= F::ZERO {
-        Err(ContactError::NonPositiveRadius)
-    } else if sphere.mass <= F::ZERO {
-        Err(ContactError::NonPositiveMass)
-    } else {
-        Ok(())
-    }
-}
-
-/// The contact between spheres i and j, `None` when they do not overlap.
+/// The contact between checked spheres i and j, `None` when they do not overlap; only the
+/// coincident-centre test remains to be made.
 #[inline(always)]
 pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
-    i: &Sphere<F>,
-    j: &Sphere<F>,
-    lever_arm: LeverArm,
-) -> Result<Option<ContactFrame<F>>, ContactError> {
-    validate(i)?;
-    validate(j)?;
-    sphere_sphere_validated::<F, M>(i, j, lever_arm)
-}
-
-/// [`sphere_sphere`] for spheres whose fields the caller has already validated (a scene checks
-/// them once, not per contact); only the coincident-centre test remains.
-#[inline(always)]
-pub(crate) fn sphere_sphere_validated<F: Float, M: MathBackend<F>>(
-    i: &Sphere<F>,
-    j: &Sphere<F>,
+    i: &CheckedSphere<F>,
+    j: &CheckedSphere<F>,
     lever_arm: LeverArm,
 ) -> Result<Option<ContactFrame<F>>, ContactError> {
     let offset = j.position - i.position;
@@ -104,24 +79,11 @@ pub(crate) fn sphere_sphere_validated<F: Float, M: MathBackend<F>>(
     }))
 }
 
-/// The contact between a sphere (body i) and a wall (body j), `None` when they do not overlap.
+/// The contact between a checked sphere (body i) and a wall (body j), `None` when they do not
+/// overlap.
 #[inline(always)]
 pub(crate) fn sphere_wall<F: Float>(
-    sphere: &Sphere<F>,
-    wall: &Wall<F>,
-    lever_arm: LeverArm,
-) -> Result<Option<ContactFrame<F>>, ContactError> {
-    validate(sphere)?;
-    if !wall.is_finite() {
-        return Err(ContactError::NonFiniteInput);
-    }
-    Ok(sphere_wall_validated(sphere, wall, lever_arm))
-}
-
-/// [`sphere_wall`] for a sphere and wall the caller has already validated.
-#[inline(always)]
-pub(crate) fn sphere_wall_validated<F: Float>(
-    sphere: &Sphere<F>,
+    sphere: &CheckedSphere<F>,
     wall: &Wall<F>,
     lever_arm: LeverArm,
 ) -> Option<ContactFrame<F>> {
@@ -142,7 +104,7 @@ pub(crate) fn sphere_wall_validated<F: Float>(
         overlap,
         arm_i,
         arm_j: F::ZERO,
-        velocity: wall.velocity - sphere.velocity,
+        velocity: wall.velocity() - sphere.velocity,
         angular_velocity_i: sphere.angular_velocity,
         angular_velocity_j: Vec3::ZERO,
     })

@@ -4,6 +4,8 @@ use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
 use crate::body::{Sphere, Wall, effective_mass};
+use crate::checked::CheckedSphere;
+use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
@@ -68,6 +70,11 @@ pub struct ContactForces<F> {
     pub normal_force: F,
     /// Tangential force on j (N); `|tangential_force| <= mu |normal_force|`.
     pub tangential_force: Vec3<F>,
+    /// Slip velocity of the contact point, j relative to i, in the tangent plane (m/s):
+    /// `v_t = v_rel - (v_rel . n) n` with `v_rel = v_j - v_i - (a_i w_i + a_j w_j) x n` (no spin
+    /// term for a [`NonRotating`] law). Zero for a [`Frictionless`](crate::Frictionless) law, which
+    /// does not compute it.
+    pub slip_velocity: Vec3<F>,
     /// Torque on i about its centre (N m): `-a_i n x F_t`.
     pub torque_on_i: Vec3<F>,
     /// Torque on j about its centre (N m): `-a_j n x F_t` (zero for a wall).
@@ -90,12 +97,20 @@ impl<F: Float> ContactForces<F> {
     }
 
     fn is_finite(&self) -> bool {
-        let (t, a, b) = (self.tangential_force, self.torque_on_i, self.torque_on_j);
+        let (t, s, a, b) = (
+            self.tangential_force,
+            self.slip_velocity,
+            self.torque_on_i,
+            self.torque_on_j,
+        );
         all_finite([
             self.normal_force,
             t.x,
             t.y,
             t.z,
+            s.x,
+            s.y,
+            s.z,
             a.x,
             a.y,
             a.z,
@@ -259,7 +274,9 @@ where
         }
     }
 
-    /// Evaluates the contact between spheres `i` and `j` for one step.
+    /// Evaluates the contact between spheres `i` and `j` for one step, checking both spheres.
+    /// An engine that evaluates each sphere in many contacts checks it once instead, as a
+    /// [`CheckedSphere`], and evaluates through [`ContactLaw::at`].
     ///
     /// `state` is this pair's per-contact state, owned by the caller and passed in the same (i, j)
     /// order every step. On success it is advanced; when the spheres are apart it is reset; on
@@ -277,13 +294,13 @@ where
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let frame = geometry::sphere_sphere::<F, M>(i, j, self.lever_arm)?;
-        let oscillator = self.contact_oscillator(effective_mass(i.mass, j.mass));
-        self.resolve(frame, &oscillator, state, time_step)
+        let (i, j) = (CheckedSphere::new(*i)?, CheckedSphere::new(*j)?);
+        self.at(time_step).sphere_sphere(&i, &j, state)
     }
 
-    /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step. State
-    /// handling and errors as for [`ContactLaw::sphere_sphere`] (a wall cannot coincide).
+    /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step, checking
+    /// the sphere. State handling and errors as for [`ContactLaw::sphere_sphere`] (a wall cannot
+    /// coincide, and is valid by construction).
     ///
     /// # Errors
     /// As [`ContactLaw::sphere_sphere`], without [`ContactError::CoincidentCentres`].
@@ -295,59 +312,43 @@ where
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let frame = geometry::sphere_wall(sphere, wall, self.lever_arm)?;
-        let oscillator = self.contact_oscillator(sphere.mass);
-        self.resolve(frame, &oscillator, state, time_step)
+        let sphere = CheckedSphere::new(*sphere)?;
+        self.at(time_step).sphere_wall(&sphere, wall, state)
     }
 
-    /// The normal oscillator of a contact with this effective mass, on this law's backend (what
-    /// every evaluation uses; [`ContactLaw::oscillator`] is the reference-backend one).
-    #[inline(always)]
-    pub(crate) fn contact_oscillator(&self, effective_mass: F) -> NormalOscillator<F> {
-        self.normal.oscillator::<M>(effective_mass)
+    /// The law bound to a checked time step: it evaluates [`CheckedSphere`]s with no repeated
+    /// checks, and computes the normal oscillator once per pair of masses instead of once per
+    /// contact. The same bits as [`ContactLaw::sphere_sphere`] and [`ContactLaw::sphere_wall`].
+    pub fn at(&self, time_step: TimeStep<F>) -> BoundLaw<'_, Self> {
+        BoundLaw::new(self, time_step)
     }
 
-    /// [`ContactLaw::sphere_sphere`] for spheres a scene validated when it took them (their
-    /// masses and radii never change there, and it checks positions and velocities after every
-    /// step), with the oscillator of their effective mass computed once per mass pair.
+    /// The outcome for an overlap (`Some` frame) or none.
     #[inline(always)]
-    pub(crate) fn sphere_sphere_validated(
+    fn interaction(
         &self,
-        (i, j): (&Sphere<F>, &Sphere<F>),
-        oscillator: &NormalOscillator<F>,
+        frame: Option<ContactFrame<F>>,
+        oscillator: impl FnOnce() -> NormalOscillator<F>,
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let frame = geometry::sphere_sphere_validated::<F, M>(i, j, self.lever_arm)?;
-        self.resolve(frame, oscillator, state, time_step)
-    }
-
-    /// [`ContactLaw::sphere_wall`] for a validated sphere and wall; see
-    /// [`ContactLaw::sphere_sphere_validated`].
-    #[inline(always)]
-    pub(crate) fn sphere_wall_validated(
-        &self,
-        (sphere, wall): (&Sphere<F>, &Wall<F>),
-        oscillator: &NormalOscillator<F>,
-        state: &mut T::State,
-        time_step: TimeStep<F>,
-    ) -> Result<Interaction<F>, ContactError> {
-        let frame = geometry::sphere_wall_validated(sphere, wall, self.lever_arm);
-        self.resolve(frame, oscillator, state, time_step)
+        match frame {
+            None => {
+                *state = T::State::default();
+                Ok(Interaction::Apart)
+            }
+            Some(frame) => self.resolve(frame, &oscillator(), state, time_step),
+        }
     }
 
     #[inline(always)]
     fn resolve(
         &self,
-        frame: Option<ContactFrame<F>>,
+        frame: ContactFrame<F>,
         oscillator: &NormalOscillator<F>,
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let Some(frame) = frame else {
-            *state = T::State::default();
-            return Ok(Interaction::Apart);
-        };
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
         let normal_force = self
@@ -359,6 +360,7 @@ where
             overlap: frame.overlap,
             normal_force,
             tangential_force: Vec3::ZERO,
+            slip_velocity: Vec3::ZERO,
             torque_on_i: Vec3::ZERO,
             torque_on_j: Vec3::ZERO,
             sliding: false,
@@ -382,6 +384,7 @@ where
             };
             let output = self.tangential.force::<M>(state, &input);
             forces.tangential_force = output.force;
+            forces.slip_velocity = slip_velocity;
             forces.sliding = output.sliding;
             next_state = output.state;
             if R::ROTATES {
@@ -395,5 +398,69 @@ where
         }
         *state = next_state;
         Ok(Interaction::Touching(forces))
+    }
+}
+
+impl<F: Float, N, T, M, R> sealed::Sealed for ContactLaw<F, N, T, M, R> {}
+
+impl<F, N, T, M, R> Law for ContactLaw<F, N, T, M, R>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    type Float = F;
+    type State = T::State;
+
+    fn time_step(
+        &self,
+        seconds: F,
+        smallest_effective_mass: F,
+    ) -> Result<TimeStep<F>, ParameterError> {
+        ContactLaw::time_step(self, seconds, smallest_effective_mass)
+    }
+
+    fn recommended_time_step(&self, effective_mass: F) -> F {
+        ContactLaw::recommended_time_step(self, effective_mass)
+    }
+
+    fn contact_duration(&self, effective_mass: F) -> F {
+        ContactLaw::contact_duration(self, effective_mass)
+    }
+
+    #[inline(always)]
+    fn evaluate_pair(
+        bound: &mut BoundLaw<'_, Self>,
+        i: &CheckedSphere<F>,
+        j: &CheckedSphere<F>,
+        state: &mut T::State,
+    ) -> Result<Interaction<F>, ContactError> {
+        let law = bound.law();
+        let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
+        let time_step = bound.time_step();
+        let oscillator = || {
+            *bound.pair_oscillator([i.mass, j.mass], |masses| {
+                law.normal
+                    .oscillator::<M>(effective_mass(masses[0], masses[1]))
+            })
+        };
+        law.interaction(frame, oscillator, state, time_step)
+    }
+
+    #[inline(always)]
+    fn evaluate_wall(
+        bound: &mut BoundLaw<'_, Self>,
+        sphere: &CheckedSphere<F>,
+        wall: &Wall<F>,
+        state: &mut T::State,
+    ) -> Result<Interaction<F>, ContactError> {
+        let law = bound.law();
+        let frame = geometry::sphere_wall(sphere, wall, law.lever_arm);
+        let time_step = bound.time_step();
+        let oscillator =
+            || *bound.wall_oscillator(sphere.mass, |mass| law.normal.oscillator::<M>(mass));
+        law.interaction(frame, oscillator, state, time_step)
     }
 }

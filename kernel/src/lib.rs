@@ -3,7 +3,8 @@
 //! Linear soft-sphere contact laws for discrete-element (DEM) simulation: a normal spring and
 //! dashpot, a tangential spring and dashpot, and a Coulomb slider, in the implementations compared
 //! by Elghannay & Tafti (NETL 2017): the stateless simplified law, Model AA (stored spring with a
-//! limited displacement), and Models A, B and C, kept so their failures can be shown.
+//! limited displacement), and Models A, B and C, kept so their failures can be shown. The
+//! formulas, conventions and validation cases are in `docs/physics.md`.
 //!
 //! `#![no_std]`, no allocation, no `unsafe`; `f32` and `f64`; sphere-sphere and sphere-wall.
 //!
@@ -22,7 +23,8 @@
 //! };
 //!
 //! # fn main() -> Result<(), Box<dyn core::error::Error>> {
-//! // The talk's oblique-impact parameters: k_n = 1000 N/m, e = 0.98, k_t = 860 N/m, mu = 0.092.
+//! // Elghannay & Tafti's oblique-impact parameters: k_n = 1000 N/m, e = 0.98, k_t = 860 N/m,
+//! // mu = 0.092.
 //! let normal = LinearSpringDashpot::new(1000.0_f64, 0.98)?;
 //! let tangential = ModelAA(TangentialParameters::new(860.0, 0.5, 0.092)?);
 //! let law = ContactLaw::new(normal, tangential);
@@ -63,7 +65,8 @@
 //!   [`ParameterError`] for non-finite or non-positive stiffness, mass, radius or time step, a
 //!   restitution outside `[0, 1]`, a negative friction or damping ratio, and a time step at or past
 //!   the law's stability limit. Contact evaluations return [`ContactError`] for non-finite inputs,
-//!   non-positive radii or masses, coincident centres, overflowing results and a full history store.
+//!   non-positive radii or masses, coincident centres, overflowing results and a full history store;
+//!   a [`Wall`] checks every field when it is set.
 //!   Arbitrary bit patterns in every input give a finite result or an error.
 //!   (`errors.rs`; property `arbitrary_bit_patterns_give_a_value_or_an_error`)
 //! - **Nothing is half-updated.** A rejected evaluation leaves the per-contact state and the history
@@ -111,27 +114,22 @@
 //!   [`Stateless`], [`ModelC`] and [`Frictionless`] keep no per-contact state; the stored-spring
 //!   laws keep three floats. (`layout.rs`)
 //!
-//! ## Scenes
+//! ## Engines: the checked fast path
 //!
-//! [`scene`] steps many spheres without allocation: a cell grid and Verlet list over
-//! caller-owned buffers, the contact states kept beside the list (and parked in per-sphere slots
-//! while it is rebuilt), walls as a compile-time slot ([`scene::NoWalls`] costs nothing),
-//! symplectic Euler or velocity Verlet, on one thread or over a caller's [`scene::Executor`].
-//! Its guarantees (`tests/scene.rs`):
-//! - every touching pair is found, across periodic boundaries (against a brute-force search);
-//! - stored springs survive list rebuilds, the same bits as the law applied to the pair directly;
-//! - the same bits for any number of threads, and run to run;
-//! - invalid spheres, and stored states of pairs that are not the scene's, are refused when the
-//!   scene takes them ([`scene::SceneError::Sphere`], [`scene::SceneError::History`]); a
-//!   failed step leaves the history as it was (with symplectic Euler, the whole scene); a step
-//!   whose integration overflows is reported and the scene refuses to go on.
+//! An engine that evaluates each sphere in many contacts checks it once, as a [`CheckedSphere`],
+//! binds the law to its checked time step with [`ContactLaw::at`], and evaluates through the
+//! resulting [`BoundLaw`]: no input is checked twice, and the normal oscillator is derived once
+//! per pair of masses. [`Law`] names any law as one type parameter, with its precision and
+//! per-contact state (`L::Float`, `L::State`). The scene crate (`examples/scene`), the C ABI and
+//! the examples reach the laws only through this public API; `docs/architecture.md` says where
+//! everything lives.
 //!
 //! ## Conventions
 //!
 //! The unit normal `n` points from body i to body j (for a wall: from the sphere into the wall).
 //! Forces in [`ContactForces`] act on j; i receives the negative. Lever arms are the radii by
 //! default ([`LeverArm`]); the same arm is used for the slip velocity and the torque, which keeps
-//! the contact passive. Physics and formulas follow `shared/reference/REFERENCE.md`.
+//! the contact passive. Physics and formulas: `docs/physics.md`.
 
 #![no_std]
 #![forbid(unsafe_code)]
@@ -140,6 +138,8 @@
 
 mod backend;
 mod body;
+mod checked;
+mod engine;
 mod error;
 mod float;
 mod geometry;
@@ -147,7 +147,6 @@ mod law;
 pub mod motion;
 mod normal;
 mod rotation;
-pub mod scene;
 mod store;
 pub mod tangential;
 mod time_step;
@@ -155,6 +154,8 @@ mod vector;
 
 pub use backend::{Libm, MathBackend, Micromath};
 pub use body::{Sphere, Wall, effective_mass};
+pub use checked::CheckedSphere;
+pub use engine::{BoundLaw, Law};
 pub use error::{ContactError, Parameter, ParameterError};
 pub use float::Float;
 pub use geometry::LeverArm;

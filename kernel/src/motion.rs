@@ -48,37 +48,34 @@ pub fn drift<F: Float>(sphere: &mut Sphere<F>, time_step: TimeStep<F>) {
 
 #[inline(always)]
 fn kick<F: Float>(sphere: &mut Sphere<F>, force: Vec3<F>, torque: Vec3<F>, dt: F) {
-    kick_by(sphere, force, torque, KickFactors::new(sphere, dt));
+    Kick::new(sphere, dt).apply(sphere, force, torque);
 }
 
-/// How much one kick of `dt` changes a sphere's velocity per newton and its angular velocity per
-/// newton metre: `dt / m` and `dt / I`. They depend only on the mass, radius and step, so a
-/// scene computes them once per kind of sphere instead of twice per sphere and step.
+/// One kick of `dt` for one kind of sphere: how much it changes the velocity per newton (`dt / m`)
+/// and the angular velocity per newton metre (`dt / I`, homogeneous solid sphere). They depend
+/// only on the mass, radius and step, so an engine computes them once per kind of sphere instead
+/// of twice per sphere and step; applying them gives the same bits as [`half_kick`] or the kick
+/// of [`advance_solid_sphere`] with the same step.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct KickFactors<F> {
+pub struct Kick<F> {
     linear: F,
     angular: F,
 }
 
-impl<F: Float> KickFactors<F> {
+impl<F: Float> Kick<F> {
+    /// The kick of `dt` seconds for spheres of this mass and radius.
     #[inline(always)]
-    pub(crate) fn new(sphere: &Sphere<F>, dt: F) -> Self {
+    pub fn new(sphere: &Sphere<F>, dt: F) -> Self {
         Self {
             linear: dt / sphere.mass,
             angular: dt / sphere.solid_moment_of_inertia(),
         }
     }
-}
 
-/// A kick with precomputed factors; the same bits as [`half_kick`] or the kick of
-/// [`advance_solid_sphere`] with the factors of the same step.
-#[inline(always)]
-pub(crate) fn kick_by<F: Float>(
-    sphere: &mut Sphere<F>,
-    force: Vec3<F>,
-    torque: Vec3<F>,
-    factors: KickFactors<F>,
-) {
-    sphere.velocity += force * factors.linear;
-    sphere.angular_velocity += torque * factors.angular;
+    /// Kicks `sphere` (of the mass and radius this was made for) under a total force and torque.
+    #[inline(always)]
+    pub fn apply(&self, sphere: &mut Sphere<F>, force: Vec3<F>, torque: Vec3<F>) {
+        sphere.velocity += force * self.linear;
+        sphere.angular_velocity += torque * self.angular;
+    }
 }

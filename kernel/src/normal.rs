@@ -51,6 +51,8 @@ pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
 /// kept, which makes the rebound ratio exactly `e`; [`LinearSpringDashpot::with_attraction_clamped`]
 /// clips the force at zero instead (LIGGGHTS' `limitForce`), which raises the effective restitution
 /// (0.5 becomes 0.5503, 0.9 becomes 0.9020; Schwager & Poeschel 2007).
+/// [`LinearSpringDashpot::clamped_with_rebound`] builds a clamped law that rebounds at a given
+/// ratio.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LinearSpringDashpot<F> {
     stiffness: F,
@@ -89,6 +91,63 @@ impl<F: Float> LinearSpringDashpot<F> {
             damping_ratio,
             damped_frequency_ratio,
             clamp_attraction: false,
+        })
+    }
+
+    /// A spring of stiffness `k_n` whose force is clipped at zero (never attractive), damped so
+    /// that a free binary impact rebounds with exactly `rebound` times its approach speed.
+    ///
+    /// The clipped contact ends when `k_n delta + eta_n delta' = 0`, and the rebound ratio is then
+    /// `exp(-2 (zeta / s) atan(s / zeta))` with `s = sqrt(1 - zeta^2)` (Schwager & Poeschel 2007;
+    /// `docs/physics.md`, section 2). This solves it for `zeta` (bisection in `f64`, 64 halvings).
+    /// It falls from 1 at `zeta = 0` to `exp(-2)` = 0.1353 at critical damping, so lower rebound
+    /// ratios cannot be had from a clipped linear dashpot. [`LinearSpringDashpot::restitution`]
+    /// then returns `rebound`.
+    ///
+    /// ```
+    /// use soft_sphere::LinearSpringDashpot;
+    /// let law = LinearSpringDashpot::clamped_with_rebound(1000.0_f64, 0.5).unwrap();
+    /// assert!(law.clamps_attraction());
+    /// // The unclipped law with the same dashpot has a lower restitution.
+    /// let same_dashpot = LinearSpringDashpot::new(1000.0, 0.4363).unwrap();
+    /// assert!((law.damping_ratio() - same_dashpot.damping_ratio()).abs() < 1e-4);
+    /// ```
+    ///
+    /// # Errors
+    /// As [`LinearSpringDashpot::new`], and [`ParameterError::ReboundUnreachable`] for a rebound
+    /// ratio below `exp(-2)`.
+    pub fn clamped_with_rebound(stiffness: F, rebound: F) -> Result<Self, ParameterError> {
+        let law = Self::new(stiffness, rebound)?;
+        let target = -libm::log(rebound.to_f64());
+        if !(target <= 2.0) {
+            return Err(ParameterError::ReboundUnreachable {
+                rebound: rebound.to_f64(),
+                lowest: libm::exp(-2.0),
+            });
+        }
+        // -ln(rebound) rises monotonically with zeta, from 0 to 2.
+        let log_rebound = |zeta: f64| {
+            if zeta >= 1.0 {
+                return 2.0;
+            }
+            let s = libm::sqrt(1.0 - zeta * zeta);
+            2.0 * zeta / s * libm::atan2(s, zeta)
+        };
+        let (mut low, mut high) = (0.0_f64, 1.0_f64);
+        for _ in 0..64 {
+            let middle = 0.5 * (low + high);
+            if log_rebound(middle) < target {
+                low = middle;
+            } else {
+                high = middle;
+            }
+        }
+        let zeta = 0.5 * (low + high);
+        Ok(Self {
+            damping_ratio: F::from_f64(zeta),
+            damped_frequency_ratio: F::from_f64(libm::sqrt(1.0 - zeta * zeta)),
+            clamp_attraction: true,
+            ..law
         })
     }
 

@@ -13,7 +13,7 @@ static int tangential_restitution(int angle_deg, double *e_t) {
     double mass = (4.0 / 3.0) * pi * RADIUS * RADIUS * RADIUS * DENSITY;
     ss_params_f64 params = {
         .model = SS_MODEL_AA, .normal_stiffness = 1000.0, .restitution = 0.98,
-        .tangential_stiffness = 860.0, .damping_ratio = 0.0, .friction = 0.092,
+        .tangential_stiffness = 860.0, .dashpot_ratio = 0.0, .friction = 0.092,
         .smallest_effective_mass = mass,
     };
     double duration;

@@ -16,7 +16,7 @@ module soft_sphere
   end type
   type, bind(c) :: ss_params_f64
     integer(c_int32_t) :: model
-    real(c_double) :: normal_stiffness, restitution, tangential_stiffness, damping_ratio, &
+    real(c_double) :: normal_stiffness, restitution, tangential_stiffness, dashpot_ratio, &
                       friction, time_step, smallest_effective_mass
   end type
   type, bind(c) :: ss_state_f64

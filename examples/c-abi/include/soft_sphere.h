@@ -75,7 +75,7 @@
 #define SS_ERR_NON_FINITE_RESULT 12
 
 /**
- * The wall normal is zero or not finite.
+ * The wall normal is zero, or a wall field is not finite.
  */
 #define SS_ERR_BAD_WALL 13
 
@@ -120,9 +120,9 @@ typedef struct {
    */
   double tangential_stiffness;
   /**
-   * eta_t / eta_n.
+   * The dashpot ratio eta_t / eta_n.
    */
-  double damping_ratio;
+  double dashpot_ratio;
   /**
    * Coulomb mu.
    */
@@ -265,9 +265,9 @@ typedef struct {
    */
   float tangential_stiffness;
   /**
-   * eta_t / eta_n.
+   * The dashpot ratio eta_t / eta_n.
    */
-  float damping_ratio;
+  float dashpot_ratio;
   /**
    * Coulomb mu.
    */

@@ -1,19 +1,60 @@
 //! The checked-in C header is what cbindgen makes of `src/lib.rs` now. Regenerate it with
 //! `UPDATE_HEADER=1 cargo test -p soft-sphere-ffi --test header`.
+//!
+//! The f32 and f64 entry points are written once, as the `entry_points!` macro; cbindgen does not
+//! expand macros, so this test expands its invocations (a plain substitution of the macro's
+//! parameters) and hands cbindgen the source with the expansions appended.
 
 use std::path::PathBuf;
+
+/// `source` with every `entry_points!(...)` invocation's expansion appended.
+fn expanded(source: &str) -> String {
+    let arm = source
+        .split_once("macro_rules! entry_points {")
+        .expect("the entry_points macro")
+        .1;
+    let (pattern, rest) = arm.split_once("=> {").expect("one macro arm");
+    let body = rest.split_once("\n    };\n}").expect("the arm's end").0;
+    let parameters: Vec<&str> = pattern
+        .split('$')
+        .skip(1)
+        .map(|p| p.split(':').next().unwrap().trim())
+        .collect();
+    let mut out = source.to_string();
+    for invocation in source.split("\nentry_points!(").skip(1) {
+        let arguments = invocation.split_once(");").unwrap().0;
+        let (real, names) = arguments.split_once(':').unwrap();
+        let values: Vec<&str> = std::iter::once(real.trim())
+            .chain(names.split(',').map(str::trim))
+            .collect();
+        assert_eq!(values.len(), parameters.len(), "{arguments}");
+        let mut expansion = body.to_string();
+        // Longest names first, so that no parameter is a prefix of one replaced after it.
+        let mut pairs: Vec<_> = parameters.iter().zip(&values).collect();
+        pairs.sort_by_key(|(p, _)| std::cmp::Reverse(p.len()));
+        for (parameter, value) in pairs {
+            expansion = expansion.replace(&format!("${parameter}"), value);
+        }
+        out.push_str(&expansion);
+    }
+    out
+}
 
 #[test]
 fn header_is_current() {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).unwrap();
+    let source = std::fs::read_to_string(crate_dir.join("src/lib.rs")).unwrap();
+    let scratch = std::env::temp_dir().join(format!("soft_sphere_ffi_{}.rs", std::process::id()));
+    std::fs::write(&scratch, expanded(&source)).unwrap();
     let mut generated = Vec::new();
     cbindgen::Builder::new()
-        .with_crate(&crate_dir)
+        .with_src(&scratch)
         .with_config(config)
         .generate()
-        .expect("cbindgen parses the crate")
+        .expect("cbindgen parses the expanded source")
         .write(&mut generated);
+    let _ = std::fs::remove_file(&scratch);
     let generated = String::from_utf8(generated).unwrap();
     let path = crate_dir.join("include/soft_sphere.h");
     if std::env::var_os("UPDATE_HEADER").is_some() {
@@ -26,9 +67,12 @@ fn header_is_current() {
     );
     for symbol in [
         "ss_law_new_f64",
+        "ss_law_new_f32",
         "ss_sphere_wall_f32",
+        "ss_contact_duration_f32",
         "ss_forces_f64",
         "ss_law_f32",
+        "dashpot_ratio",
     ] {
         assert!(
             generated.contains(symbol),

@@ -3,7 +3,10 @@
 //!
 //! It shows both ways of keeping tangential history: the sphere-sphere springs live in the
 //! kernel's fixed-capacity [`ContactHistory`]; the sphere-wall springs live in a plain array the
-//! loop owns. The pair search is the plain all-pairs loop, fine for a few dozen spheres.
+//! loop owns. The spheres are [`CheckedSphere`]s evaluated through the law bound to its step
+//! ([`ContactLaw::at`]), the checked path every engine uses. It does not use the scene crate
+//! (`examples/scene`) because at 16 spheres the plain all-pairs loop a firmware writer would write
+//! is simpler than a cell grid, and showing that loop is its point.
 //!
 //! [`BoxScene`] is generic over the math backend; [`settle_with_libm`] and
 //! [`settle_with_micromath`] are concrete instances, so building this crate for a bare-metal
@@ -20,18 +23,18 @@
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, Libm, LinearSpringDashpot,
-    MathBackend, Micromath, ModelAA, ParameterError, Sphere, SpringDisplacement,
-    TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
+    CheckedSphere, ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, Libm,
+    LinearSpringDashpot, MathBackend, Micromath, ModelAA, ParameterError, Sphere,
+    SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
 };
 
 /// Number of spheres.
 pub const SPHERES: usize = 16;
 /// Floor and four side walls; the box is open at the top.
 pub const WALLS: usize = 5;
-/// Slots for simultaneous sphere-sphere contacts (a power of two above the 6 per sphere that a
-/// dense layer can reach, halved because each contact is shared).
-pub const PAIR_SLOTS: usize = 64;
+/// Room for simultaneous sphere-sphere contacts in the history store (a power of two above the 6
+/// per sphere that a dense layer can reach, halved because each contact is shared).
+pub const PAIR_CAPACITY: usize = 64;
 /// Sphere radius (m).
 pub const RADIUS: f32 = 1.0e-3;
 /// Side of the square box (m).
@@ -59,10 +62,10 @@ pub struct Summary {
 #[derive(Clone, Debug)]
 pub struct BoxScene<M: MathBackend<f32>> {
     /// The spheres, in the caller's index order.
-    pub spheres: [Sphere<f32>; SPHERES],
+    pub spheres: [CheckedSphere<f32>; SPHERES],
     walls: [Wall<f32>; WALLS],
     wall_springs: [[SpringDisplacement<f32>; WALLS]; SPHERES],
-    pair_springs: ContactHistory<SpringDisplacement<f32>, PAIR_SLOTS>,
+    pair_springs: ContactHistory<SpringDisplacement<f32>, PAIR_CAPACITY>,
     law: Law<M>,
     time_step: TimeStep<f32>,
 }
@@ -72,13 +75,13 @@ impl<M: MathBackend<f32>> BoxScene<M> {
     /// `k_t = 2/7 k_n`, `e = 0.5`, `eta_t = eta_n / 2`, `mu = 0.5`, `dt = t_c / 50`.
     ///
     /// # Errors
-    /// Only if the constants above were edited into an invalid law.
-    pub fn new() -> Result<Self, ParameterError> {
+    /// Only if the constants above were edited into an invalid law or sphere.
+    pub fn new() -> Result<Self, SceneError> {
         let normal = LinearSpringDashpot::new(1000.0, 0.5)?;
         let tangential = ModelAA(TangentialParameters::new(1000.0 * 2.0 / 7.0, 0.5, 0.5)?);
         let law = ContactLaw::new(normal, tangential).with_backend::<M>();
-        let mut spheres = [Sphere::default(); SPHERES];
-        for (k, sphere) in spheres.iter_mut().enumerate() {
+        let mut plain = [Sphere::default(); SPHERES];
+        for (k, sphere) in plain.iter_mut().enumerate() {
             let (column, layer) = (k % 4, k / 4);
             // A fixed, index-derived jitter so the column does not stack perfectly.
             let jitter = ((k * 7919) % 13) as f32 / 13.0 - 0.5;
@@ -88,6 +91,10 @@ impl<M: MathBackend<f32>> BoxScene<M> {
                 1.5e-3 + 2.5e-3 * layer as f32,
             );
             *sphere = Sphere::solid(position, RADIUS, DENSITY);
+        }
+        let mut spheres = [CheckedSphere::new(plain[0])?; SPHERES];
+        for (checked, sphere) in spheres.iter_mut().zip(plain) {
+            *checked = CheckedSphere::new(sphere)?;
         }
         let pair_mass = effective_mass(spheres[0].mass, spheres[1].mass);
         let time_step = law.time_step(law.recommended_time_step(pair_mass), pair_mass)?;
@@ -121,6 +128,7 @@ impl<M: MathBackend<f32>> BoxScene<M> {
     /// not moved; contact states evaluated earlier in the same step have already advanced, so
     /// treat the error as the end of the run (as firmware would).
     pub fn step(&mut self) -> Result<(), ContactError> {
+        let mut law = self.law.at(self.time_step);
         let mut forces = [Vec3::ZERO; SPHERES];
         let mut torques = [Vec3::ZERO; SPHERES];
         for (k, sphere) in self.spheres.iter().enumerate() {
@@ -130,10 +138,9 @@ impl<M: MathBackend<f32>> BoxScene<M> {
             for j in i + 1..SPHERES {
                 let (a, b) = (&self.spheres[i], &self.spheres[j]);
                 let key = ContactKey::new(i as u32, j as u32);
-                let (law, dt) = (&self.law, self.time_step);
                 let interaction = self
                     .pair_springs
-                    .evaluate(key, |spring| law.sphere_sphere(a, b, spring, dt))?;
+                    .evaluate(key, |spring| law.sphere_sphere(a, b, spring))?;
                 if let Interaction::Touching(contact) = interaction {
                     forces[i] += contact.force_on_i();
                     forces[j] += contact.force_on_j();
@@ -143,17 +150,16 @@ impl<M: MathBackend<f32>> BoxScene<M> {
             }
             for (w, wall) in self.walls.iter().enumerate() {
                 let spring = &mut self.wall_springs[i][w];
-                let interaction =
-                    self.law
-                        .sphere_wall(&self.spheres[i], wall, spring, self.time_step)?;
+                let interaction = law.sphere_wall(&self.spheres[i], wall, spring)?;
                 if let Interaction::Touching(contact) = interaction {
                     forces[i] += contact.force_on_i();
                     torques[i] += contact.torque_on_i;
                 }
             }
         }
+        let dt = self.time_step;
         for (k, sphere) in self.spheres.iter_mut().enumerate() {
-            advance_solid_sphere(sphere, forces[k], torques[k], self.time_step);
+            sphere.update(|s| advance_solid_sphere(s, forces[k], torques[k], dt))?;
         }
         Ok(())
     }

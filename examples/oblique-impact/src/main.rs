@@ -1,4 +1,4 @@
-//! One oblique sphere-wall impact, the Kharaz et al. (2001) setup with the talk's parameters,
+//! One oblique sphere-wall impact, the Kharaz et al. (2001) setup with Elghannay & Tafti's parameters,
 //! run with every tangential law of `soft-sphere` and printed next to rigid-body theory.
 //!
 //! This is also the smallest complete use of the kernel: build a law, check a time step, and
@@ -14,7 +14,7 @@ use soft_sphere::{
     Stateless, TangentialModel, TangentialParameters, Vec3, Wall,
 };
 
-// The talk's parameters (slide 5).
+// Elghannay & Tafti's parameters.
 const DIAMETER: f64 = 5.0e-3;
 const DENSITY: f64 = 2700.0;
 const SPEED: f64 = 3.9;
@@ -77,7 +77,7 @@ fn impact<T: TangentialModel<f64>>(
     Err("the sphere did not leave the wall".into())
 }
 
-/// Rigid-body theory for a solid sphere (REFERENCE 4.2): `(e_t, w, rebound angle)`.
+/// Rigid-body theory for a solid sphere (docs/physics.md, section 5.2): `(e_t, w, rebound angle)`.
 fn rigid_body(angle_deg: f64) -> (f64, f64, f64) {
     let theta = angle_deg.to_radians();
     let impulse = FRICTION * (1.0 + RESTITUTION);

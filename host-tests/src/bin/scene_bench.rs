@@ -1,4 +1,4 @@
-//! The reference scene of issue 5, timed: a settled column of spheres on a floor, periodic in x
+//! The reference scene, timed: a settled column of spheres on a floor, periodic in x
 //! and y, stepped 10,000 times at dt = 2e-6 s (k_n = 1000 N/m, k_t = 2/7 k_n, e = 0.9, eta_t =
 //! eta_n / 2, mu = 0.5, Model AA, f64), one thread. Prints the loop time (min/median/max over
 //! repeats), particle-steps per second, and the physics at the end (kinetic energy, contacts per
@@ -18,16 +18,16 @@ use host_tests::scene::{
     Column, OwnedScene, Threads, positions_csv, wall_restitution_for_same_dashpot,
     write_lammps_data,
 };
-use soft_sphere::scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
 use soft_sphere::{
-    ContactLaw, Frictionless, LinearSpring, LinearSpringDashpot, MathBackend, ModelAA, NormalModel,
-    Rotation, Sphere, TangentialModel, TangentialParameters, Vec3, Wall,
+    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, ModelAA, Sphere,
+    TangentialParameters, Vec3, Wall,
 };
+use soft_sphere_scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
 
 const NORMAL_STIFFNESS: f64 = 1000.0;
 const RESTITUTION: f64 = 0.9;
 const FRICTION: f64 = 0.5;
-const DAMPING_RATIO: f64 = 0.5;
+const DASHPOT_RATIO: f64 = 0.5;
 const TIME_STEP: f64 = 2e-6;
 const GRAVITY: f64 = 9.81;
 /// Verlet-list skin, the same as LAMMPS's `neighbor 1e-4 bin`.
@@ -84,7 +84,7 @@ fn options() -> Result<Options, Box<dyn Error>> {
 }
 
 fn tangential() -> TangentialParameters<f64> {
-    TangentialParameters::new(2.0 / 7.0 * NORMAL_STIFFNESS, DAMPING_RATIO, FRICTION).unwrap()
+    TangentialParameters::new(2.0 / 7.0 * NORMAL_STIFFNESS, DASHPOT_RATIO, FRICTION).unwrap()
 }
 
 fn floor() -> [Wall<f64>; 1] {
@@ -95,11 +95,6 @@ fn floor() -> [Wall<f64>; 1] {
 /// stops every sphere. Cached in `target/scene/`.
 /// Spheres and the height of the box they were poured into.
 type Packing = (Vec<Sphere<f64>>, f64);
-/// The pair law and the wall law of one variant.
-type LawPair<N, T, R> = (
-    ContactLaw<f64, N, T, soft_sphere::Libm, R>,
-    ContactLaw<f64, N, T, soft_sphere::Libm, R>,
-);
 
 fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
     let cache = PathBuf::from(format!("target/scene/packing_{}.csv", column.spheres));
@@ -117,9 +112,13 @@ fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
         column.spheres,
         cache.display()
     );
-    let mut scene =
-        OwnedScene::<f64, _>::new(lattice, column.domain(height), (column.diameter, SKIN), 1)?;
-    let mass = scene.spheres[0].mass;
+    let mass = lattice[0].mass;
+    let mut scene = OwnedScene::new(
+        lattice,
+        column.domain(height),
+        (column.diameter, SKIN),
+        floor(),
+    )?;
     let settle_e = 0.3;
     let law = ContactLaw::new(
         LinearSpringDashpot::new(NORMAL_STIFFNESS, settle_e)?,
@@ -130,11 +129,9 @@ fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
         LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?,
         ModelAA(tangential()),
     );
-    let walls = floor();
     let input = StepInput {
         law: &law,
         wall_law: &wall_law,
-        walls: &walls,
         gravity: Vec3::new(0.0, 0.0, -GRAVITY),
         time_step: law.time_step(4e-6, mass / 2.0)?,
         integrator: Integrator::SymplecticEuler,
@@ -150,8 +147,9 @@ fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
     }
     scene.stop();
     std::fs::create_dir_all(cache.parent().unwrap())?;
-    std::fs::write(&cache, positions_csv(&scene.spheres))?;
-    Ok((scene.spheres, height))
+    let spheres = scene.plain_spheres();
+    std::fs::write(&cache, positions_csv(&spheres))?;
+    Ok((spheres, height))
 }
 
 struct Measured {
@@ -163,28 +161,22 @@ struct Measured {
     sliding_fraction: f64,
 }
 
-fn time_runs<N, T, M, R, W>(
+fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     o: &Options,
     spheres: &[Sphere<f64>],
     height: f64,
-    input: &StepInput<'_, f64, N, T, M, R, W>,
-) -> Result<Measured, Box<dyn Error>>
-where
-    N: NormalModel<f64>,
-    T: TangentialModel<f64>,
-    M: MathBackend<f64>,
-    R: Rotation,
-    W: WallSet<f64>,
-{
+    input: &StepInput<'_, L>,
+    walls: &W,
+) -> Result<Measured, Box<dyn Error>> {
     let mut seconds = Vec::new();
     let mut last = (0.0, 0.0, 0.0);
     let mut sliding_fraction = 0.0;
     for _ in 0..o.repeat {
-        let mut scene = OwnedScene::<f64, T::State>::new(
+        let mut scene = OwnedScene::<L, W>::new(
             spheres.to_vec(),
             o.column.domain(height),
             (o.column.diameter, SKIN),
-            W::COUNT,
+            walls.clone(),
         )?;
         let mut stats = Default::default();
         let (mut touching, mut sliding) = (0usize, 0usize);
@@ -227,23 +219,23 @@ where
     })
 }
 
-fn run_variant<N: NormalModel<f64>, T: TangentialModel<f64>, R: Rotation, W: WallSet<f64>>(
+/// Times the pair law and the wall law of one variant.
+fn run_variant<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     o: &Options,
     spheres: &[Sphere<f64>],
     height: f64,
-    laws: LawPair<N, T, R>,
+    (law, wall_law): (L, L),
     walls: &W,
 ) -> Result<Measured, Box<dyn Error>> {
-    let mass = spheres[0].mass;
+    let time_step = law.time_step(TIME_STEP, spheres[0].mass / 2.0)?;
     let input = StepInput {
-        law: &laws.0,
-        wall_law: &laws.1,
-        walls,
+        law: &law,
+        wall_law: &wall_law,
         gravity: Vec3::new(0.0, 0.0, -GRAVITY),
-        time_step: laws.0.time_step(TIME_STEP, mass / 2.0)?,
+        time_step,
         integrator: o.integrator,
     };
-    time_runs(o, spheres, height, &input)
+    time_runs(o, spheres, height, &input, walls)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -366,7 +358,7 @@ fn lammps_deck(mass: f64, steps: usize) -> String {
     let zeta = -l / (std::f64::consts::PI.powi(2) + l * l).sqrt();
     let eta_n = 2.0 * zeta * (pair_mass * NORMAL_STIFFNESS).sqrt();
     let gamma_n = eta_n / pair_mass;
-    let gamma_t = DAMPING_RATIO * gamma_n;
+    let gamma_t = DASHPOT_RATIO * gamma_n;
     let k_t = 2.0 / 7.0 * NORMAL_STIFFNESS;
     format!(
         "# Generated by host-tests/src/bin/scene_bench.rs: the soft-sphere reference scene.\n\

@@ -1,4 +1,4 @@
-//! The validation run: every case of REFERENCE section 4 against theory and data, printed as
+//! The validation run: every case of docs/physics.md, section 5 against theory and data, printed as
 //! tables, written as CSV and SVG, and a non-zero exit status when a tolerance is missed.
 //!
 //! Usage: `cargo run --release -p host-tests --bin validate -- [--out DIR]`
@@ -49,9 +49,12 @@ fn run() -> Result<bool, Box<dyn Error>> {
     let progress = |what: &str| eprintln!("[{:6.2} s] {what}", start.elapsed().as_secs_f64());
 
     let cases = [
-        ("Normal impact (REFERENCE 4.1)", normal::case(progress)),
         (
-            "Kharaz oblique impact (REFERENCE 4.2, 4.4)",
+            "Normal impact (docs/physics.md, section 5.1)",
+            normal::case(progress),
+        ),
+        (
+            "Kharaz oblique impact (docs/physics.md, sections 5.2 and 5.4)",
             kharaz::talk_sweep(progress),
         ),
         (
@@ -59,7 +62,7 @@ fn run() -> Result<bool, Box<dyn Error>> {
             kharaz::mfix_check(progress),
         ),
         (
-            "Sphere sliding on a plate (REFERENCE 4.3)",
+            "Sphere sliding on a plate (docs/physics.md, section 5.3)",
             plate::case(progress),
         ),
     ];

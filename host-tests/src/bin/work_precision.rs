@@ -1,4 +1,4 @@
-//! Run time against error for the Kharaz impact (REFERENCE case 2, talk's parameters, Model AA):
+//! Run time against error for the Kharaz impact (docs/physics.md, section 5.2, talk's parameters, Model AA):
 //! every combination of precision (f32, f64), math backend (libm, micromath) and integrator
 //! (symplectic Euler, velocity Verlet) at steps from t_c/10 to t_c/1000, against a converged f64
 //! reference (t_c/20000). Writes `work_precision.csv` and the log-log plot
@@ -25,11 +25,11 @@ use host_tests::plot::{Axes, Mark, Series, chart};
 use host_tests::scene::{Column, OwnedScene, wall_restitution_for_same_dashpot};
 use host_tests::validation::kharaz::TALK;
 use host_tests::validation::{Cell, Table};
-use soft_sphere::scene::{self, StepInput};
 use soft_sphere::{
     ContactLaw, Float, Libm, LinearSpringDashpot, MathBackend, Micromath, ModelAA, Sphere,
     TangentialParameters, Vec3, Wall,
 };
+use soft_sphere_scene::{self as scene, StepInput};
 
 const ANGLES: [f64; 9] = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 60.0, 80.0];
 const STEPS: [f64; 6] = [10.0, 20.0, 50.0, 100.0, 200.0, 1000.0];
@@ -231,21 +231,20 @@ type Bed = (Vec<Sphere<f64>>, scene::Domain<f64>);
 fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
     let (lattice, height) = BED.lattice::<f64>();
     let domain = BED.domain(height);
-    let mut bed = OwnedScene::<f64, _>::new(lattice, domain, (BED.diameter, BED_SKIN), 1)?;
-    let mass = bed.spheres[0].mass;
-    let [law, wall_law] = scene_laws::<f64, Libm>(0.3, mass);
     let walls = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?];
+    let mass = lattice[0].mass;
+    let [law, wall_law] = scene_laws::<f64, Libm>(0.3, mass);
+    let mut bed = OwnedScene::new(lattice, domain, (BED.diameter, BED_SKIN), walls)?;
     let input = StepInput {
         law: &law,
         wall_law: &wall_law,
-        walls: &walls,
         gravity: Vec3::new(0.0, 0.0, -9.81),
         time_step: law.time_step(4e-6, mass / 2.0)?,
         integrator: scene::Integrator::SymplecticEuler,
     };
     bed.run(&input, 40_000, |_, _| {})?;
     bed.stop();
-    let mut spheres = bed.spheres;
+    let mut spheres = bed.plain_spheres();
     for s in &mut spheres {
         let phase = 2.0 * std::f64::consts::PI * s.position.x / BED.width_x;
         s.velocity.z = 0.05 * phase.sin();
@@ -289,7 +288,6 @@ fn shake<F: Float, M: MathBackend<F>>(
     let input = StepInput {
         law: &law,
         wall_law: &wall_law,
-        walls: &walls,
         gravity: Vec3::new(F::ZERO, F::ZERO, f(-9.81)),
         time_step: law.time_step(f(dt), f(mass / 2.0))?,
         integrator,
@@ -299,8 +297,12 @@ fn shake<F: Float, M: MathBackend<F>>(
     let (mut runs, mut spent) = (0, 0.0);
     while runs < repeats || spent < 0.5 {
         runs += 1;
-        let mut scene =
-            OwnedScene::<F, _>::new(spheres.clone(), domain, (f(BED.diameter), f(BED_SKIN)), 1)?;
+        let mut scene = OwnedScene::new(
+            spheres.clone(),
+            domain,
+            (f(BED.diameter), f(BED_SKIN)),
+            walls,
+        )?;
         let (mut overlap, mut contacts) = (0.0, 0);
         let start = Instant::now();
         scene.run(&input, steps, |_, s| {

@@ -1,4 +1,4 @@
-//! REFERENCE 4.2 and 4.4: the Kharaz oblique impact with every tangential model, against the
+//! docs/physics.md, sections 5.2 and 5.4: the Kharaz oblique impact with every tangential model, against the
 //! experiment, rigid-body theory, the MFiX DEM05 linear-model reference, and itself at a fine step.
 
 use soft_sphere::{
@@ -32,7 +32,7 @@ pub struct Setup {
     pub damping_ratio: f64,
 }
 
-/// The talk's parameters (slide 5; REFERENCE 4.2 and 4.4, eta_t = 0).
+/// Elghannay & Tafti's parameters (docs/physics.md, sections 5.2 and 5.4, eta_t = 0).
 pub const TALK: Setup = Setup {
     radius: 2.5e-3,
     density: 2700.0,
@@ -85,7 +85,7 @@ impl Setup {
 /// The tangential models, in the order tables and plots list them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Model {
-    /// The stateless law (REFERENCE 3.1).
+    /// The stateless law (docs/physics.md, section 3.1).
     Stateless,
     /// Model A (Cundall & Strack).
     ModelA,
@@ -218,7 +218,7 @@ pub fn table(outcomes: &[Outcome], comment: String) -> Table {
     table
 }
 
-/// Relative tolerance between dt = t_c/50 and t_c/1000 (issue 3).
+/// Relative tolerance between dt = t_c/50 and t_c/1000.
 pub const CONVERGENCE_TOLERANCE: f64 = 5e-3;
 /// Relative tolerance to the rigid-body closed form above the gross-sliding threshold.
 pub const SLIDING_TOLERANCE: f64 = 5e-3;
@@ -230,7 +230,7 @@ fn sweep_angles() -> impl Iterator<Item = f64> {
     (1..=89).map(f64::from)
 }
 
-/// The talk's sweep for every model at t_c/50, its convergence against t_c/1000, the rigid-body
+/// Elghannay & Tafti's sweep for every model at t_c/50, its convergence against t_c/1000, the rigid-body
 /// checks, Model C's step dependence, and the RMS distance of each model from the experiment.
 pub fn talk_sweep(mut progress: impl FnMut(&str)) -> CaseOutput {
     let mut out = CaseOutput::default();

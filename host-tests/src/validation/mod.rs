@@ -1,4 +1,4 @@
-//! The validation cases of REFERENCE section 4, each run against its closed form or data, with the
+//! The validation cases of docs/physics.md, section 5, each run against its closed form or data, with the
 //! tolerance the project states for it. The `validate` binary prints and writes them; the
 //! `validation` test runs the same cases and fails when a tolerance is missed.
 

@@ -1,4 +1,4 @@
-//! REFERENCE 4.1: head-on impacts against the closed forms, free and with the normal force
+//! docs/physics.md, section 5.1: head-on impacts against the closed forms, free and with the normal force
 //! clipped at zero, and how the shipped integrators converge with the step.
 
 use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, NormalModel, Vec3};

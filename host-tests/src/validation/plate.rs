@@ -1,4 +1,4 @@
-//! REFERENCE 4.3: a sphere launched sliding without spin on a plate, under gravity, until it rolls.
+//! docs/physics.md, section 5.3: a sphere launched sliding without spin on a plate, under gravity, until it rolls.
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
@@ -11,7 +11,7 @@ use super::{CaseOutput, Table};
 use crate::analytic::rolling_onset;
 use crate::impact::floor;
 
-/// The talk's plate case (REFERENCE 4.3).
+/// Elghannay & Tafti's plate case (docs/physics.md, section 5.3).
 const RADIUS: f64 = 5.0e-3;
 const DENSITY: f64 = 2500.0;
 const INITIAL_SPEED: f64 = 1.0;

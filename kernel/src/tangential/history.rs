@@ -119,7 +119,7 @@ stored_spring_model!(
 );
 
 stored_spring_model!(
-    /// Model AA (the talk's proper implementation): Model A's sliding force, with the stored
+    /// Model AA (Elghannay & Tafti's proper implementation): Model A's sliding force, with the stored
     /// displacement limited to `mu |F_n| / k_t` after every sliding step, as a deformation must be.
     /// Reproduces the Kharaz oblique-impact data including the recoil dip near 20 degrees, and
     /// rolling at 5/7 on a plate. This is the plain displacement cap, not Luding's variant (which

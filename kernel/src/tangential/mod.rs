@@ -1,5 +1,6 @@
-//! The tangential slot: spring, dashpot and Coulomb slider, in the implementations the talk
-//! compares. They differ only in what happens when the contact slides:
+//! The tangential slot: spring, dashpot and Coulomb slider, in the implementations compared by
+//! Elghannay & Tafti (2017). They differ only in what happens when the contact slides
+//! (`docs/physics.md`, section 3):
 //!
 //! | slot | displacement used in the trial force | sliding force | displacement kept |
 //! |---|---|---|---|
@@ -8,9 +9,9 @@
 //! | [`ModelC`] | `v_t dt` (this step only) | against the slip | none |
 //! | [`ModelA`] (Cundall & Strack) | stored | along the trial force | grows without bound |
 //! | [`ModelB`] (Tsuji et al.) | stored | against the slip | grows without bound |
-//! | [`ModelAA`] (the talk's proper implementation) | stored | along the trial force | limited to `mu |F_n| / k_t` |
+//! | [`ModelAA`] (Elghannay & Tafti's proper implementation) | stored | along the trial force | limited to `mu |F_n| / k_t` |
 //!
-//! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = (eta_t/eta_n) eta_n`; the contact sticks
+//! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = r eta_n` (`r` the dashpot ratio); the contact sticks
 //! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
 //! square root; within the backend's square-root error otherwise).
 
@@ -96,25 +97,32 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F;
 }
 
-/// Stiffness, damping and friction shared by every frictional slot.
+/// Stiffness, dashpot and friction shared by every frictional slot.
+///
+/// The Coulomb limit is `mu |F_n|` with the normal force *including* its dashpot (as MFiX does).
+/// In an impact the dashpot adds to `F_n` while the spheres approach and pulls while they
+/// separate, so with `e < 1` the friction impulse is larger than rigid-body theory's `mu (1 + e)
+/// m v_n`: by 6.7 % at `e = 0.5` (`docs/physics.md`, section 3). The stateless law and Model AA
+/// therefore match rigid-body theory's gross-sliding branch exactly only near `e = 1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TangentialParameters<F> {
     stiffness: F,
-    damping_ratio: F,
+    dashpot_ratio: F,
     friction: F,
 }
 
 impl<F: Float> TangentialParameters<F> {
-    /// Tangential stiffness `k_t` (N/m), the ratio `eta_t / eta_n` of tangential to normal damping
-    /// (MFiX uses 1/2; 0 removes the tangential dashpot) and the Coulomb coefficient `mu`.
+    /// Tangential stiffness `k_t` (N/m), the dashpot ratio `r = eta_t / eta_n` of tangential to
+    /// normal dashpot coefficient (MFiX uses 1/2; 0 removes the tangential dashpot) and the
+    /// Coulomb coefficient `mu`.
     ///
     /// # Errors
     /// [`ParameterError::NonFinite`] for any non-finite value, [`ParameterError::NotPositive`]
-    /// for `k_t <= 0`, [`ParameterError::Negative`] for a negative damping ratio or `mu`.
-    pub fn new(stiffness: F, damping_ratio: F, friction: F) -> Result<Self, ParameterError> {
+    /// for `k_t <= 0`, [`ParameterError::Negative`] for a negative dashpot ratio or `mu`.
+    pub fn new(stiffness: F, dashpot_ratio: F, friction: F) -> Result<Self, ParameterError> {
         Ok(Self {
             stiffness: positive(stiffness, Parameter::TangentialStiffness)?,
-            damping_ratio: non_negative(damping_ratio, Parameter::TangentialDampingRatio)?,
+            dashpot_ratio: non_negative(dashpot_ratio, Parameter::DashpotRatio)?,
             friction: non_negative(friction, Parameter::Friction)?,
         })
     }
@@ -124,9 +132,9 @@ impl<F: Float> TangentialParameters<F> {
         self.stiffness
     }
 
-    /// `eta_t / eta_n`.
-    pub fn damping_ratio(&self) -> F {
-        self.damping_ratio
+    /// The dashpot ratio `eta_t / eta_n`.
+    pub fn dashpot_ratio(&self) -> F {
+        self.dashpot_ratio
     }
 
     /// Coulomb friction coefficient `mu`.
@@ -137,7 +145,7 @@ impl<F: Float> TangentialParameters<F> {
     /// `eta_t` for a contact with normal dashpot `eta_n`.
     #[inline(always)]
     pub(crate) fn dashpot(&self, oscillator: &NormalOscillator<F>) -> F {
-        self.damping_ratio * oscillator.damping_coefficient
+        self.dashpot_ratio * oscillator.damping_coefficient
     }
 
     /// The Coulomb limit `mu |F_n|`.

@@ -1,14 +1,12 @@
 //! Spreading a scene step over threads without giving up determinism.
 //!
-//! The kernel owns no threads. A caller with threads implements [`Executor`] (the std wrapper in
+//! The scene owns no threads. A caller with threads implements [`Executor`] (the std wrapper in
 //! `host-tests` does it with rayon); the scene hands it independent pieces of work: the contacts
 //! of a stretch of the Verlet list (each with its own stored state and its own result slot),
 //! the walls of a stretch of spheres, the integration of a stretch of spheres. The per-contact
 //! forces are then added onto the spheres by one thread in list order, exactly as the serial
 //! step adds them, so the result is the same bits for any number of threads, and the same bits
 //! as [`Serial`].
-
-use crate::vector::Vec3;
 
 /// Runs independent pieces of a scene step, on as many threads as it likes.
 pub trait Executor {
@@ -21,7 +19,7 @@ pub trait Executor {
     fn for_each_mut<T: Send, W: Fn(&mut T) + Sync + Send>(&self, items: &mut [T], work: W);
 }
 
-/// One thread, in order: what [`Scene::step`](super::Scene::step) uses.
+/// One thread, in order: what [`Scene::step`](crate::Scene::step) uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Serial;
 
@@ -31,24 +29,6 @@ impl Executor for Serial {
     fn for_each_mut<T: Send, W: Fn(&mut T) + Sync + Send>(&self, items: &mut [T], work: W) {
         items.iter_mut().for_each(work);
     }
-}
-
-/// What one candidate pair contributed in a step, kept until the forces are added up in list
-/// order (the `pair_results` buffer of a parallel step).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PairResult<F> {
-    /// Force on the higher-index sphere j (sphere i receives the negative).
-    pub force_on_j: Vec3<F>,
-    /// Torque on sphere i.
-    pub torque_on_i: Vec3<F>,
-    /// Torque on sphere j.
-    pub torque_on_j: Vec3<F>,
-    /// Overlap (m).
-    pub overlap: F,
-    /// The pair touched.
-    pub touching: bool,
-    /// The contact was at the Coulomb limit.
-    pub sliding: bool,
 }
 
 /// At most this many pieces per phase: enough to keep a many-core machine busy, few enough for

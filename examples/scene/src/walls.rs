@@ -1,14 +1,14 @@
 //! The walls of a scene as a compile-time slot: a scene without walls pays nothing for them.
 
-use crate::body::Wall;
-use crate::float::Float;
+use soft_sphere::{Float, Wall};
 
-/// The walls of a scene, chosen at compile time: [`NoWalls`] costs nothing.
+/// The walls of a scene, chosen at compile time: [`NoWalls`] costs nothing. The number of walls
+/// is the type's, so the scene sizes its wall buffer from it.
 pub trait WallSet<F: Float>: Sync {
     /// How many walls.
     const COUNT: usize;
-    /// Wall `k` (`k < COUNT`).
-    fn wall(&self, k: usize) -> &Wall<F>;
+    /// Wall `k`, `None` past [`WallSet::COUNT`].
+    fn wall(&self, k: usize) -> Option<&Wall<F>>;
 }
 
 /// A scene without walls.
@@ -17,14 +17,14 @@ pub struct NoWalls;
 
 impl<F: Float> WallSet<F> for NoWalls {
     const COUNT: usize = 0;
-    fn wall(&self, _: usize) -> &Wall<F> {
-        unreachable!("NoWalls has no wall")
+    fn wall(&self, _: usize) -> Option<&Wall<F>> {
+        None
     }
 }
 
 impl<F: Float, const N: usize> WallSet<F> for [Wall<F>; N] {
     const COUNT: usize = N;
-    fn wall(&self, k: usize) -> &Wall<F> {
-        &self[k]
+    fn wall(&self, k: usize) -> Option<&Wall<F>> {
+        self.get(k)
     }
 }

@@ -5,12 +5,10 @@
 //! each cell and the 13 cells of its half shell, so each pair is seen once and the cost grows with
 //! the number of spheres, not its square. Periodic directions use the minimum image.
 
-use crate::body::Sphere;
-use crate::error::ContactError;
-use crate::float::Float;
-use crate::vector::Vec3;
+use soft_sphere::{CheckedSphere, Float, Vec3};
 
-use super::SceneError;
+use crate::buffers::ListEntry;
+use crate::error::SceneError;
 
 /// The box the spheres live in. `x` and `y` may be periodic; `z` never is (use walls).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,7 +26,7 @@ pub struct Domain<F> {
 /// A pair of spheres within contact distance plus the skin at the last list build; `j` is seen
 /// through the periodic image `image` (multiples of the box lengths in x and y).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Candidate {
+pub(crate) struct Candidate {
     pub(crate) i: u32,
     pub(crate) j: u32,
     pub(crate) image: [i8; 2],
@@ -136,7 +134,12 @@ impl<F: Float> Grid<F> {
 
     /// Counting sort of the spheres into cells: cell `c` holds
     /// `entries[start[c]..start[c + 1]]`, by increasing sphere index.
-    pub(crate) fn sort(&self, spheres: &[Sphere<F>], start: &mut [u32], entries: &mut [u32]) {
+    pub(crate) fn sort(
+        &self,
+        spheres: &[CheckedSphere<F>],
+        start: &mut [u32],
+        entries: &mut [u32],
+    ) {
         start.fill(0);
         for s in spheres {
             start[self.cell_of(s.position) + 1] += 1;
@@ -177,14 +180,14 @@ impl<F: Float> Grid<F> {
     /// into `start` and `entries` by [`Grid::sort`].
     ///
     /// # Errors
-    /// [`ContactError::HistoryFull`] when `list` is too short.
-    pub(crate) fn pairs(
+    /// `Err` when `list` is too short.
+    pub(crate) fn pairs<S>(
         &self,
-        spheres: &[Sphere<F>],
+        spheres: &[CheckedSphere<F>],
         (start, entries): (&[u32], &[u32]),
         skin: F,
-        list: &mut [Candidate],
-    ) -> Result<usize, ContactError> {
+        list: &mut [ListEntry<S>],
+    ) -> Result<usize, ()> {
         let [nx, ny, nz] = self.cells;
         let mut count = 0;
         for cz in 0..nz {
@@ -222,14 +225,14 @@ impl<F: Float> Grid<F> {
         Ok(count)
     }
 
-    fn cell_pairs(
+    fn cell_pairs<S>(
         &self,
-        spheres: &[Sphere<F>],
+        spheres: &[CheckedSphere<F>],
         (here, there): (&[u32], &[u32]),
         (same_cell, image): (bool, [i8; 2]),
         skin: F,
-        (list, mut count): (&mut [Candidate], usize),
-    ) -> Result<usize, ContactError> {
+        (list, mut count): (&mut [ListEntry<S>], usize),
+    ) -> Result<usize, ()> {
         let shift = self.image_shift(image);
         for (at, &a) in here.iter().enumerate() {
             // Within one cell each pair once: only later entries.
@@ -242,10 +245,10 @@ impl<F: Float> Grid<F> {
                 if offset.norm_squared() >= reach * reach {
                     continue;
                 }
-                let slot = list.get_mut(count).ok_or(ContactError::HistoryFull)?;
+                let entry = list.get_mut(count).ok_or(())?;
                 // The lower index owns the pair and is body i, so its stored state keeps its
                 // orientation whichever cell found the pair.
-                *slot = if a < b {
+                entry.candidate = if a < b {
                     Candidate { i: a, j: b, image }
                 } else {
                     Candidate {

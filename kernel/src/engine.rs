@@ -1,0 +1,208 @@
+//! What an engine calls: any contact law as one type parameter ([`Law`]), bound to its checked
+//! time step ([`BoundLaw`]) and evaluated on checked spheres with no repeated checks.
+
+use crate::body::Wall;
+use crate::checked::CheckedSphere;
+use crate::error::{ContactError, ParameterError};
+use crate::float::Float;
+use crate::law::Interaction;
+use crate::normal::NormalOscillator;
+use crate::tangential::ContactState;
+use crate::time_step::TimeStep;
+
+pub(crate) mod sealed {
+    /// Only the kernel's [`ContactLaw`](crate::ContactLaw) is a [`Law`](super::Law).
+    pub trait Sealed {}
+}
+
+/// A [`ContactLaw`](crate::ContactLaw), whatever its slots: lets an engine take the law as one
+/// type parameter and name its precision and per-contact state (`L::Float`, `L::State`) without
+/// knowing which slots it was built from. Sealed.
+///
+/// ```
+/// use soft_sphere::{CheckedSphere, ContactError, Interaction, Law, TimeStep};
+///
+/// /// An engine's inner loop over a list of pairs, for any law.
+/// fn pair_forces<L: Law>(
+///     law: &L,
+///     time_step: TimeStep<L::Float>,
+///     spheres: &[CheckedSphere<L::Float>],
+///     pairs: &[(usize, usize)],
+///     states: &mut [L::State],
+/// ) -> Result<usize, ContactError> {
+///     let mut bound = law.at(time_step);
+///     let mut touching = 0;
+///     for (&(i, j), state) in pairs.iter().zip(states.iter_mut()) {
+///         if let Interaction::Touching(_) = bound.sphere_sphere(&spheres[i], &spheres[j], state)? {
+///             touching += 1;
+///         }
+///     }
+///     Ok(touching)
+/// }
+/// # use soft_sphere::{ContactLaw, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3};
+/// # let law = ContactLaw::new(
+/// #     LinearSpringDashpot::new(1.0e4_f64, 0.8).unwrap(),
+/// #     ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+/// # );
+/// # let spheres = [0.0, 1.9e-3, 5.0e-3].map(|x| {
+/// #     CheckedSphere::new(Sphere::solid(Vec3::new(x, 0.0, 0.0), 1.0e-3, 2500.0)).unwrap()
+/// # });
+/// # let dt = law.time_step(1.0e-6, spheres[0].mass / 2.0).unwrap();
+/// # let mut states = [Default::default(); 2];
+/// # assert_eq!(pair_forces(&law, dt, &spheres, &[(0, 1), (1, 2)], &mut states), Ok(1));
+/// ```
+pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
+    /// The precision, `f32` or `f64`.
+    type Float: Float;
+    /// The per-contact state the law keeps: `()` for laws that store nothing, a
+    /// [`SpringDisplacement`](crate::SpringDisplacement) for the stored-spring laws.
+    type State: ContactState;
+
+    /// Checks a time step; see [`ContactLaw::time_step`](crate::ContactLaw::time_step).
+    ///
+    /// # Errors
+    /// As [`ContactLaw::time_step`](crate::ContactLaw::time_step).
+    fn time_step(
+        &self,
+        seconds: Self::Float,
+        smallest_effective_mass: Self::Float,
+    ) -> Result<TimeStep<Self::Float>, ParameterError>;
+
+    /// See [`ContactLaw::recommended_time_step`](crate::ContactLaw::recommended_time_step).
+    fn recommended_time_step(&self, effective_mass: Self::Float) -> Self::Float;
+
+    /// See [`ContactLaw::contact_duration`](crate::ContactLaw::contact_duration).
+    fn contact_duration(&self, effective_mass: Self::Float) -> Self::Float;
+
+    /// The law bound to a checked time step; see [`ContactLaw::at`](crate::ContactLaw::at).
+    fn at(&self, time_step: TimeStep<Self::Float>) -> BoundLaw<'_, Self> {
+        BoundLaw::new(self, time_step)
+    }
+
+    /// What [`BoundLaw::sphere_sphere`] calls.
+    ///
+    /// # Errors
+    /// As [`BoundLaw::sphere_sphere`].
+    fn evaluate_pair(
+        bound: &mut BoundLaw<'_, Self>,
+        i: &CheckedSphere<Self::Float>,
+        j: &CheckedSphere<Self::Float>,
+        state: &mut Self::State,
+    ) -> Result<Interaction<Self::Float>, ContactError>;
+
+    /// What [`BoundLaw::sphere_wall`] calls.
+    ///
+    /// # Errors
+    /// As [`BoundLaw::sphere_wall`].
+    fn evaluate_wall(
+        bound: &mut BoundLaw<'_, Self>,
+        sphere: &CheckedSphere<Self::Float>,
+        wall: &Wall<Self::Float>,
+        state: &mut Self::State,
+    ) -> Result<Interaction<Self::Float>, ContactError>;
+}
+
+/// A law bound to a checked time step, made by [`ContactLaw::at`](crate::ContactLaw::at): the
+/// checked fast path. Its inputs were checked once (the spheres as [`CheckedSphere`]s, walls by
+/// construction, the step by [`ContactLaw::time_step`](crate::ContactLaw::time_step)), so each
+/// evaluation does only the contact's own work. It remembers the normal oscillator of the last
+/// pair of masses it saw (and of the last sphere against a wall), so a scene of one kind of
+/// sphere derives it once; a new pair of masses recomputes it, the same bits as the law's own
+/// evaluation. Cheap to make: make one per thread.
+#[derive(Clone, Copy, Debug)]
+pub struct BoundLaw<'l, L: Law> {
+    law: &'l L,
+    time_step: TimeStep<L::Float>,
+    // Masses are positive, so the zeros an empty memo starts from never match.
+    pair_masses: [L::Float; 2],
+    pair: NormalOscillator<L::Float>,
+    wall_mass: L::Float,
+    wall: NormalOscillator<L::Float>,
+}
+
+impl<'l, L: Law> BoundLaw<'l, L> {
+    pub(crate) fn new(law: &'l L, time_step: TimeStep<L::Float>) -> Self {
+        Self {
+            law,
+            time_step,
+            pair_masses: [<L::Float as Float>::ZERO; 2],
+            pair: NormalOscillator::default(),
+            wall_mass: <L::Float as Float>::ZERO,
+            wall: NormalOscillator::default(),
+        }
+    }
+
+    /// The law.
+    #[inline(always)]
+    pub fn law(&self) -> &'l L {
+        self.law
+    }
+
+    /// The time step.
+    #[inline(always)]
+    pub fn time_step(&self) -> TimeStep<L::Float> {
+        self.time_step
+    }
+
+    /// Evaluates the contact between checked spheres `i` and `j` for one step. State handling as
+    /// [`ContactLaw::sphere_sphere`](crate::ContactLaw::sphere_sphere), and the same bits.
+    ///
+    /// # Errors
+    /// [`ContactError::CoincidentCentres`]; [`ContactError::NonFiniteResult`] when the checked
+    /// inputs overflow. The state is then unchanged.
+    #[inline(always)]
+    pub fn sphere_sphere(
+        &mut self,
+        i: &CheckedSphere<L::Float>,
+        j: &CheckedSphere<L::Float>,
+        state: &mut L::State,
+    ) -> Result<Interaction<L::Float>, ContactError> {
+        L::evaluate_pair(self, i, j, state)
+    }
+
+    /// Evaluates the contact between a checked sphere (body i) and a wall (body j) for one step;
+    /// see [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall).
+    ///
+    /// # Errors
+    /// [`ContactError::NonFiniteResult`] when the checked inputs overflow; the state is then
+    /// unchanged.
+    #[inline(always)]
+    pub fn sphere_wall(
+        &mut self,
+        sphere: &CheckedSphere<L::Float>,
+        wall: &Wall<L::Float>,
+        state: &mut L::State,
+    ) -> Result<Interaction<L::Float>, ContactError> {
+        L::evaluate_wall(self, sphere, wall, state)
+    }
+
+    /// The oscillator of a pair of masses, derived by `derive` only when they differ from the
+    /// last pair's.
+    #[inline(always)]
+    pub(crate) fn pair_oscillator(
+        &mut self,
+        masses: [L::Float; 2],
+        derive: impl FnOnce([L::Float; 2]) -> NormalOscillator<L::Float>,
+    ) -> &NormalOscillator<L::Float> {
+        if masses != self.pair_masses {
+            self.pair_masses = masses;
+            self.pair = derive(masses);
+        }
+        &self.pair
+    }
+
+    /// The oscillator of a sphere of this mass against a wall; see
+    /// [`BoundLaw::pair_oscillator`].
+    #[inline(always)]
+    pub(crate) fn wall_oscillator(
+        &mut self,
+        mass: L::Float,
+        derive: impl FnOnce(L::Float) -> NormalOscillator<L::Float>,
+    ) -> &NormalOscillator<L::Float> {
+        if mass != self.wall_mass {
+            self.wall_mass = mass;
+            self.wall = derive(mass);
+        }
+        &self.wall
+    }
+}
