@@ -7,6 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use host_tests::random::Xorshift;
+use host_tests::triple::to_vec3;
 use soft_sphere::{
     ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring, LinearSpringDashpot,
     MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere,
@@ -18,13 +20,8 @@ const BATCH: usize = 1024;
 /// Touching pairs of 1 mm spheres at overlaps up to 1 % of the radius, random directions,
 /// velocities and spins (fixed seed).
 fn pairs<F: Float>() -> Vec<(Sphere<F>, Sphere<F>)> {
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
+    let mut random = Xorshift::new(0x9e37_79b9_7f4a_7c15);
+    let mut next = || random.unit() * 2.0 - 1.0;
     (0..BATCH)
         .map(|_| {
             let r = 5e-4;
@@ -34,7 +31,7 @@ fn pairs<F: Float>() -> Vec<(Sphere<F>, Sphere<F>)> {
                 .max(1e-3);
             let distance = 2.0 * r * (1.0 - 0.005 * (1.0 + next()));
             let f = F::from_f64;
-            let v = |a: [f64; 3], s: f64| Vec3::new(f(a[0] * s), f(a[1] * s), f(a[2] * s));
+            let v = |a: [f64; 3], s: f64| to_vec3::<F>(a.map(|x| x * s));
             let i = Sphere::solid(Vec3::ZERO, f(r), f(2500.0));
             let mut j = Sphere::solid(v(direction, distance / length), f(r), f(2500.0));
             j.velocity = v([next(), next(), next()], 0.1);

@@ -89,3 +89,25 @@ pub fn clamped_contact_duration(stiffness: f64, restitution: f64, mass: f64) -> 
     let rate = wd * phase.cos() - beta * phase.sin();
     t_force_free + overlap / -rate
 }
+
+/// `integral |F_n| dt / (m* v0)` over a free binary impact (the contact ending at `delta = 0`):
+/// the normal impulse magnitude a Coulomb limit `mu |F_n|` acts with, dashpot pull included. The
+/// signed integral is `1 + e`; the attractive end of the contact adds to the magnitude. Midpoint
+/// quadrature of the closed-form force `m* (w0^2 delta + 2 beta delta')` over 200,000 steps.
+pub fn normal_impulse_magnitude(restitution: f64) -> f64 {
+    // Only the ratio beta / wd matters: take wd = 1.
+    let ratio = -restitution.ln() / PI;
+    let (beta, wd) = (ratio, 1.0);
+    let w0_squared = wd * wd + beta * beta;
+    let steps = 200_000;
+    let dt = PI / wd / steps as f64;
+    (0..steps)
+        .map(|k| {
+            let t = (k as f64 + 0.5) * dt;
+            let decay = (-beta * t).exp();
+            let overlap = decay * (wd * t).sin() / wd;
+            let rate = decay * ((wd * t).cos() - beta / wd * (wd * t).sin());
+            (w0_squared * overlap + 2.0 * beta * rate).abs() * dt
+        })
+        .sum()
+}

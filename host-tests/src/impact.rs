@@ -20,27 +20,9 @@ pub struct ImpactOutcome<F> {
     pub steps_in_contact: usize,
 }
 
-/// The time integrators the kernel ships (`soft_sphere::motion`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Integrator {
-    /// Semi-implicit Euler: contact at the current state, kick, then drift.
-    SymplecticEuler,
-    /// Velocity Verlet: half kick, drift, contact at the half-step velocity, half kick.
-    VelocityVerlet,
-}
-
-impl Integrator {
-    /// Both, in a fixed order.
-    pub const ALL: [Self; 2] = [Self::SymplecticEuler, Self::VelocityVerlet];
-
-    /// A short name for tables and file names.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::SymplecticEuler => "symplectic_euler",
-            Self::VelocityVerlet => "velocity_verlet",
-        }
-    }
-}
+/// The integrators, where each one evaluates the contact (see `soft_sphere::motion`): the
+/// scene's, so that the impact driver and the scene name them alike.
+pub use soft_sphere_scene::Integrator;
 
 /// The floor `z = 0` with its normal up.
 pub fn floor<F: Float>() -> Wall<F> {

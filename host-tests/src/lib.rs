@@ -4,9 +4,12 @@
 
 pub mod analytic;
 pub mod data;
+pub mod energy;
 pub mod impact;
 pub mod plot;
 pub mod precision;
+pub mod random;
 pub mod scene;
 pub mod strategies;
+pub mod triple;
 pub mod validation;

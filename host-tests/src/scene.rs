@@ -5,6 +5,9 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use rayon::prelude::*;
+
+use crate::energy::kinetic;
+use crate::random::Xorshift;
 use soft_sphere::{CheckedSphere, Float, Law, Sphere, Vec3};
 use soft_sphere_scene::{
     Domain, Executor, ListEntry, PairResult, Parking, Scene, SceneBuffers, SceneError, Serial,
@@ -200,15 +203,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
 
     /// Translational plus rotational kinetic energy (J).
     pub fn kinetic_energy(&self) -> f64 {
-        self.spheres
-            .iter()
-            .map(|s| {
-                0.5 * s.mass.to_f64() * s.velocity.norm_squared().to_f64()
-                    + 0.5
-                        * s.solid_moment_of_inertia().to_f64()
-                        * s.angular_velocity.norm_squared().to_f64()
-            })
-            .sum()
+        self.spheres.iter().map(|s| kinetic(s)).sum()
     }
 }
 
@@ -269,16 +264,8 @@ impl Column {
             (self.width_x / spacing).floor() as usize,
             (self.width_y / spacing).floor() as usize,
         );
-        let mut random = 0x2545_f491_4f6c_dd1du64;
-        let mut jitter = || {
-            // xorshift64*: enough for a deterministic jitter.
-            random ^= random >> 12;
-            random ^= random << 25;
-            random ^= random >> 27;
-            let unit =
-                (random.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
-            (unit - 0.5) * 0.1 * self.diameter
-        };
+        let mut random = Xorshift::new(0x2545_f491_4f6c_dd1d);
+        let mut jitter = || (random.unit() - 0.5) * 0.1 * self.diameter;
         let mut spheres = Vec::with_capacity(self.spheres);
         let radius = 0.5 * self.diameter;
         let mut k = 0;

@@ -10,6 +10,8 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence};
 use soft_sphere::{Float, Sphere, Vec3, Wall};
 
+use crate::triple::{add_scaled, dot, to_vec3};
+
 /// Cases per property: `PROPTEST_CASES` when set (the slow configuration raises it), else 64.
 /// Failures are kept beside the test file (`tests/<name>.proptest-regressions`, committed) and
 /// replayed first on every run.
@@ -166,26 +168,10 @@ pub fn collision() -> impl Strategy<Value = Collision> {
         )
 }
 
-fn v3<F: Float>(a: [f64; 3]) -> Vec3<F> {
-    Vec3::new(F::from_f64(a[0]), F::from_f64(a[1]), F::from_f64(a[2]))
-}
-
-fn add(a: [f64; 3], b: [f64; 3], scale: f64) -> [f64; 3] {
-    [
-        a[0] + scale * b[0],
-        a[1] + scale * b[1],
-        a[2] + scale * b[2],
-    ]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
 impl Collision {
     /// Unit tangent of the approach, normal to `normal`.
     fn tangent(&self) -> [f64; 3] {
-        let t = add(
+        let t = add_scaled(
             self.tangent_hint,
             self.normal,
             -dot(self.tangent_hint, self.normal),
@@ -198,7 +184,7 @@ impl Collision {
             } else {
                 [0.0, 1.0, 0.0]
             };
-            let t = add(other, self.normal, -dot(other, self.normal));
+            let t = add_scaled(other, self.normal, -dot(other, self.normal));
             let length = dot(t, t).sqrt();
             return [t[0] / length, t[1] / length, t[2] / length];
         }
@@ -208,20 +194,24 @@ impl Collision {
     /// Relative velocity of the second sphere against the first: approaching along `-normal`.
     fn approach(&self) -> [f64; 3] {
         let theta = self.angle_deg.to_radians();
-        let along = add([0.0; 3], self.normal, -self.speed * theta.cos());
-        add(along, self.tangent(), self.speed * theta.sin())
+        let along = add_scaled([0.0; 3], self.normal, -self.speed * theta.cos());
+        add_scaled(along, self.tangent(), self.speed * theta.sin())
     }
 
     /// The two spheres, just touching, the second approaching the first.
     pub fn pair<F: Float>(&self) -> (Sphere<F>, Sphere<F>) {
         let (a, b) = (self.first, self.second);
         let mut i = Sphere::solid(Vec3::ZERO, F::from_f64(a.radius), F::from_f64(a.density));
-        i.velocity = v3(a.velocity);
-        i.angular_velocity = v3(a.spin_speed.map(|s| s / a.radius));
+        i.velocity = to_vec3(a.velocity);
+        i.angular_velocity = to_vec3(a.spin_speed.map(|s| s / a.radius));
         let centre = self.normal.map(|n| n * (a.radius + b.radius));
-        let mut j = Sphere::solid(v3(centre), F::from_f64(b.radius), F::from_f64(b.density));
-        j.velocity = v3(add(a.velocity, self.approach(), 1.0));
-        j.angular_velocity = v3(b.spin_speed.map(|s| s / b.radius));
+        let mut j = Sphere::solid(
+            to_vec3(centre),
+            F::from_f64(b.radius),
+            F::from_f64(b.density),
+        );
+        j.velocity = to_vec3(add_scaled(a.velocity, self.approach(), 1.0));
+        j.angular_velocity = to_vec3(b.spin_speed.map(|s| s / b.radius));
         (i, j)
     }
 
@@ -229,11 +219,15 @@ impl Collision {
     /// approaching.
     pub fn wall<F: Float>(&self) -> (Wall<F>, Sphere<F>) {
         let b = self.second;
-        let wall = Wall::new(Vec3::ZERO, v3(self.normal)).expect("a unit normal");
+        let wall = Wall::new(Vec3::ZERO, to_vec3(self.normal)).expect("a unit normal");
         let centre = self.normal.map(|n| n * b.radius);
-        let mut sphere = Sphere::solid(v3(centre), F::from_f64(b.radius), F::from_f64(b.density));
-        sphere.velocity = v3(self.approach());
-        sphere.angular_velocity = v3(b.spin_speed.map(|s| s / b.radius));
+        let mut sphere = Sphere::solid(
+            to_vec3(centre),
+            F::from_f64(b.radius),
+            F::from_f64(b.density),
+        );
+        sphere.velocity = to_vec3(self.approach());
+        sphere.angular_velocity = to_vec3(b.spin_speed.map(|s| s / b.radius));
         (wall, sphere)
     }
 

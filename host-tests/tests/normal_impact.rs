@@ -4,7 +4,7 @@
 
 use host_tests::analytic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
-use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, Micromath};
+use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, Micromath, ParameterError};
 
 const STIFFNESS: f64 = 1000.0;
 const RADIUS: f64 = 2.5e-3;
@@ -149,4 +149,48 @@ fn single_precision_and_micromath_rebound_close_to_e() {
             "f32 micromath e = {e}: {ratio}"
         );
     }
+}
+
+#[test]
+fn a_clamped_law_built_for_a_rebound_ratio_rebounds_with_it() {
+    for target in [0.2, 0.5, 0.75, 0.9, 0.98, 1.0] {
+        let normal = LinearSpringDashpot::clamped_with_rebound(STIFFNESS, target).unwrap();
+        assert!(normal.clamps_attraction());
+        // Schwager & Poeschel's closed form, written independently in `analytic`, for the
+        // unclipped restitution with the same damping ratio gives the target back.
+        let zeta = normal.damping_ratio();
+        let same_dashpot = (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
+        assert!(
+            (analytic::clamped_restitution(same_dashpot) - target).abs() < 1e-9,
+            "target {target}"
+        );
+        // And an impact integrated at t_c / 20000 rebounds at it.
+        let law = ContactLaw::new(normal, Frictionless);
+        let sphere = incoming_sphere(RADIUS, DENSITY, SPEED, 0.0);
+        let dt = law
+            .time_step(law.contact_duration(sphere.mass) / 20_000.0, sphere.mass)
+            .unwrap();
+        let outcome = wall_impact(&law, sphere, &floor(), dt, 200_000, |_| {}).unwrap();
+        let rebound = outcome.rebound.velocity.z / SPEED;
+        assert!(
+            (rebound - target).abs() < 1e-4,
+            "target {target}: {rebound}"
+        );
+    }
+    // The user's bisection found e = 0.4363 for a clipped rebound of 0.5.
+    let half = LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 0.5).unwrap();
+    let bisected = LinearSpringDashpot::new(STIFFNESS, 0.4363).unwrap();
+    assert!((half.damping_ratio() - bisected.damping_ratio()).abs() < 1e-4);
+    // Below exp(-2) no damping ratio up to critical reaches it.
+    for unreachable in [0.0, 0.1, 0.135] {
+        assert!(matches!(
+            LinearSpringDashpot::clamped_with_rebound(STIFFNESS, unreachable),
+            Err(ParameterError::ReboundUnreachable { .. })
+        ));
+    }
+    assert!(LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 0.136).is_ok());
+    assert_eq!(
+        LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 1.5),
+        Err(ParameterError::RestitutionOutOfRange)
+    );
 }

@@ -7,8 +7,10 @@
 //! Each property is a generic function; `each_law!` runs it for every tangential law and
 //! `for_both_precisions!` instantiates it as an f32 and an f64 proptest.
 
+use host_tests::energy::kinetic;
 use host_tests::precision::{bits, epsilon};
 use host_tests::strategies::{Collision, collision, config, log_uniform, unit_vector};
+use host_tests::triple::{cross, from_vec3, norm};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
@@ -38,36 +40,14 @@ impl<F: Float> StoredEnergy for SpringDisplacement<F> {
     }
 }
 
-fn f64s<F: Float>(v: Vec3<F>) -> [f64; 3] {
-    v.to_array().map(Float::to_f64)
-}
-
-fn norm(v: [f64; 3]) -> f64 {
-    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn kinetic<F: Float>(s: &Sphere<F>) -> f64 {
-    let (m, inertia) = (s.mass.to_f64(), s.solid_moment_of_inertia().to_f64());
-    0.5 * m * s.velocity.norm_squared().to_f64()
-        + 0.5 * inertia * s.angular_velocity.norm_squared().to_f64()
-}
-
 /// Linear momentum and angular momentum about the origin, and scales for relative tolerances.
 fn momenta<F: Float>(bodies: &[Sphere<F>]) -> ([f64; 3], [f64; 3], f64, f64) {
     let (mut p, mut l, mut p_scale, mut l_scale) = ([0.0; 3], [0.0; 3], 0.0, 0.0);
     for s in bodies {
         let m = s.mass.to_f64();
-        let mv = f64s(s.velocity).map(|v| v * m);
-        let r = f64s(s.position);
-        let spin = f64s(s.angular_velocity).map(|w| w * s.solid_moment_of_inertia().to_f64());
+        let mv = from_vec3(s.velocity).map(|v| v * m);
+        let r = from_vec3(s.position);
+        let spin = from_vec3(s.angular_velocity).map(|w| w * s.solid_moment_of_inertia().to_f64());
         let orbital = cross(r, mv);
         for k in 0..3 {
             p[k] += mv[k];
@@ -486,7 +466,7 @@ fn frame_invariant_for<F: Float, T: TangentialModel<F>>(
     let moved = |s: &Sphere<F>| {
         let mut m = *s;
         let to = |v: Vec3<F>| {
-            let r = rotate(*axis, *angle, f64s(v));
+            let r = rotate(*axis, *angle, from_vec3(v));
             Vec3::new(F::from_f64(r[0]), F::from_f64(r[1]), F::from_f64(r[2]))
         };
         let p = to(s.position);
@@ -510,9 +490,9 @@ fn frame_invariant_for<F: Float, T: TangentialModel<F>>(
         (a.torque_on_i, b.torque_on_i, "torque on i"),
         (a.torque_on_j, b.torque_on_j, "torque on j"),
     ] {
-        let expected = rotate(*axis, *angle, f64s(x));
-        let got = f64s(y);
-        let scale = norm(f64s(a.force_on_j())) * if what == "force" { 1.0 } else { extent };
+        let expected = rotate(*axis, *angle, from_vec3(x));
+        let got = from_vec3(y);
+        let scale = norm(from_vec3(a.force_on_j())) * if what == "force" { 1.0 } else { extent };
         let error = norm([0, 1, 2].map(|k| got[k] - expected[k])) / scale;
         prop_assert!(
             error <= tolerance,
@@ -554,7 +534,10 @@ fn history_order_independent<F: Float>(
         .collect();
     let mut forward: ContactHistory<SpringDisplacement<F>, 16> = ContactHistory::new();
     let mut shuffled: ContactHistory<SpringDisplacement<F>, 16> = ContactHistory::new();
-    let bits = |r: Interaction<F>| r.forces().map(|f| f64s(f.force_on_j()).map(f64::to_bits));
+    let bits = |r: Interaction<F>| {
+        r.forces()
+            .map(|f| from_vec3(f.force_on_j()).map(f64::to_bits))
+    };
     for _ in 0..5 {
         let mut first = vec![None; spheres.len()];
         let mut second = vec![None; spheres.len()];
@@ -598,12 +581,12 @@ fn determinism<F: Float>(cases: &(Vec<Collision>, Vec<usize>)) -> Result<(), Tes
         let (a, b) = (run()?, run()?);
         for (x, y) in a.iter().zip(&b) {
             prop_assert_eq!(
-                f64s(x.velocity).map(f64::to_bits),
-                f64s(y.velocity).map(f64::to_bits)
+                from_vec3(x.velocity).map(f64::to_bits),
+                from_vec3(y.velocity).map(f64::to_bits)
             );
             prop_assert_eq!(
-                f64s(x.angular_velocity).map(f64::to_bits),
-                f64s(y.angular_velocity).map(f64::to_bits)
+                from_vec3(x.angular_velocity).map(f64::to_bits),
+                from_vec3(y.angular_velocity).map(f64::to_bits)
             );
         }
     }
@@ -710,7 +693,7 @@ where
         };
         let (_, double) = collide(c, make64, wall, LeverArm::Radius)?;
         for (a, b) in single.iter().zip(&double) {
-            let (va, vb) = (f64s(a.velocity), f64s(b.velocity));
+            let (va, vb) = (from_vec3(a.velocity), from_vec3(b.velocity));
             let error = norm([0, 1, 2].map(|k| va[k] - vb[k])) / c.speed;
             let tolerance = F32_ROUNDING_FACTOR / trace.ulps_per_step;
             prop_assert!(
@@ -767,7 +750,7 @@ proptest! {
             let (Interaction::Touching(a), Interaction::Touching(b)) = (a, b) else {
                 return Err(TestCaseError::fail(format!("{name}: not touching")));
             };
-            let (fa, fb) = (f64s(a.force_on_j()), f64s(b.force_on_j()));
+            let (fa, fb) = (from_vec3(a.force_on_j()), from_vec3(b.force_on_j()));
             // Relative to the spring force at this overlap (plus the force itself): the sum of
             // spring and dashpot can nearly cancel, and a relative error of nothing says nothing.
             let spring = f64::from(stiffness) * f64::from(a.overlap);
@@ -822,8 +805,8 @@ fn arbitrary_bits_never_panic<F: Float>(bits: &[u64; 16]) -> Result<(), TestCase
         }
         Ok(Interaction::Apart) => prop_assert_eq!(state, SpringDisplacement::default()),
         Err(_) => prop_assert_eq!(
-            f64s(state.displacement).map(f64::to_bits),
-            f64s(before.displacement).map(f64::to_bits),
+            from_vec3(state.displacement).map(f64::to_bits),
+            from_vec3(before.displacement).map(f64::to_bits),
             "a rejected call changed the state"
         ),
     }
@@ -832,8 +815,8 @@ fn arbitrary_bits_never_panic<F: Float>(bits: &[u64; 16]) -> Result<(), TestCase
         let mut state = before;
         if law.sphere_wall(&j, &wall, &mut state, dt).is_err() {
             prop_assert_eq!(
-                f64s(state.displacement).map(f64::to_bits),
-                f64s(before.displacement).map(f64::to_bits)
+                from_vec3(state.displacement).map(f64::to_bits),
+                from_vec3(before.displacement).map(f64::to_bits)
             );
         }
     }

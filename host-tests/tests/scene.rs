@@ -3,6 +3,7 @@
 //! momentum; runs are bit for bit repeatable; both integrators settle a bed under gravity; the
 //! stored springs survive Verlet-list rebuilds; bad spheres and failed steps have defined answers.
 
+use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, Threads};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
@@ -26,13 +27,8 @@ fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
         width_y: 0.006,
     };
     let (mut spheres, height) = column.lattice::<f64>();
-    let mut state = seed;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
+    let mut random = Xorshift::new(seed);
+    let mut next = || random.unit() - 0.5;
     for s in &mut spheres {
         s.velocity = Vec3::new(next(), next(), next()) * 0.2;
         s.angular_velocity = Vec3::new(next(), next(), next()) * 100.0;
@@ -392,14 +388,9 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
     let mut pair = checked_pair();
     let mut b = PairBuffers::new(0);
     {
-        let mut scene = Scene::<Law, _, 4>::new(
-            open_box(),
-            (DIAMETER, 0.0),
-            &mut pair,
-            b.buffers(),
-            NoWalls,
-        )
-        .unwrap();
+        let mut scene =
+            Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 0.0), &mut pair, b.buffers(), NoWalls)
+                .unwrap();
         let touched = (0..500).any(|_| scene.step(&input).unwrap().pair_contacts > 0);
         assert!(touched, "the pair met");
     }

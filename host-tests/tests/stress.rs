@@ -2,6 +2,7 @@
 //! and head-on wall impacts, a sphere resting on a plate and on an incline for 10^6 steps,
 //! extreme but valid parameters, and the stateless law at vanishing damping frequency.
 
+use host_tests::energy::kinetic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
@@ -20,11 +21,6 @@ fn parameters<F: Float>(stiffness: f64, damping: f64, friction: f64) -> Tangenti
         F::from_f64(friction),
     )
     .unwrap()
-}
-
-fn kinetic(s: &Sphere<f64>) -> f64 {
-    0.5 * s.mass * s.velocity.norm_squared()
-        + 0.5 * s.solid_moment_of_inertia() * s.angular_velocity.norm_squared()
 }
 
 /// e_t of Elghannay & Tafti's Kharaz impact at 20 deg with `steps` per contact; `Err` when the kernel

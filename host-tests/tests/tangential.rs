@@ -2,7 +2,7 @@
 //! model comparison (docs/physics.md, sections 5.2 and 5.4), and the invariants every law must keep: the Coulomb
 //! limit, action and reaction bit for bit, and a stored spring that follows a rolling pair.
 
-use host_tests::analytic::rigid_body_oblique;
+use host_tests::analytic::{self, rigid_body_oblique};
 use host_tests::data;
 use host_tests::impact::{oblique_rebound, pair_collision};
 use host_tests::precision::{bits, epsilon};
@@ -530,6 +530,64 @@ fn an_isolated_pair_keeps_its_momentum() {
                 dl > 1e-6,
                 "{lever_arm:?}: the radius arm should not conserve it ({dl:e})"
             );
+        }
+    }
+}
+
+#[test]
+fn the_slip_velocity_is_the_contact_points_and_vanishes_in_rolling() {
+    // A sphere on the floor moving along x at 1 m/s: its lowest point moves at v - w R along x
+    // (spin about y), so the floor's contact point slips at -(v - w R) relative to it.
+    let law = kharaz::<f64, _>(ModelAA(parameters(860.0, 0.0, FRICTION)));
+    let floor = host_tests::impact::floor::<f64>();
+    let dt = law.time_step(1e-6, 1e-4).unwrap();
+    for spin in [0.0, 200.0, 1.0 / RADIUS, 600.0] {
+        let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, 0.99 * RADIUS), RADIUS, DENSITY);
+        sphere.velocity = Vec3::new(1.0, 0.0, 0.0);
+        sphere.angular_velocity = Vec3::new(0.0, spin, 0.0);
+        let Interaction::Touching(c) = law
+            .sphere_wall(&sphere, &floor, &mut SpringDisplacement::default(), dt)
+            .unwrap()
+        else {
+            panic!("the sphere overlaps the floor");
+        };
+        let expected = -(1.0 - spin * RADIUS);
+        assert!(
+            (c.slip_velocity.x - expected).abs() < 1e-12,
+            "spin {spin}: {:?}",
+            c.slip_velocity
+        );
+        assert_eq!((c.slip_velocity.y, c.slip_velocity.z), (0.0, 0.0));
+    }
+}
+
+#[test]
+fn the_dashpot_in_the_coulomb_limit_adds_to_the_friction_impulse() {
+    // In gross sliding the friction impulse is mu times the normal impulse's magnitude, which
+    // with e < 1 includes the dashpot's pull at the end of contact: 6.7 % more than rigid-body
+    // theory's mu (1 + e) m v_n at e = 0.5 (the claim in the Stateless and
+    // TangentialParameters docs), nothing at e = 1.
+    let excess = analytic::normal_impulse_magnitude(0.5) / 1.5 - 1.0;
+    assert!((excess - 0.067).abs() < 0.001, "excess {excess}");
+    assert!((analytic::normal_impulse_magnitude(1.0) - 2.0).abs() < 1e-9);
+    for e in [0.5, 0.98] {
+        let law = ContactLaw::new(
+            LinearSpringDashpot::new(1000.0, e).unwrap(),
+            Stateless(parameters(860.0, 0.0, FRICTION)),
+        );
+        let angle: f64 = 60.0;
+        let r = oblique_rebound(&law, RADIUS, DENSITY, SPEED, angle, 10_000.0, |_| {});
+        let friction_impulse = (1.0 - r.tangential_restitution) * angle.to_radians().tan();
+        // The spring force starts below the limit, so the first moments of contact stick: the
+        // impulse falls short of mu times the magnitude by 0.4 % at e = 0.5 (converged in dt).
+        let expected = FRICTION * analytic::normal_impulse_magnitude(e);
+        assert!(
+            relative_error(friction_impulse, expected) < 5e-3,
+            "e = {e}: {friction_impulse} vs {expected}"
+        );
+        let rigid_body = FRICTION * (1.0 + e);
+        if e == 0.5 {
+            assert!(friction_impulse > 1.05 * rigid_body, "{friction_impulse}");
         }
     }
 }

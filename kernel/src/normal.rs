@@ -119,7 +119,7 @@ impl<F: Float> LinearSpringDashpot<F> {
     pub fn clamped_with_rebound(stiffness: F, rebound: F) -> Result<Self, ParameterError> {
         let law = Self::new(stiffness, rebound)?;
         let target = -libm::log(rebound.to_f64());
-        if !(target <= 2.0) {
+        if target > 2.0 {
             return Err(ParameterError::ReboundUnreachable {
                 rebound: rebound.to_f64(),
                 lowest: libm::exp(-2.0),

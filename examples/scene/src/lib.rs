@@ -55,6 +55,22 @@ pub enum Integrator {
     VelocityVerlet,
 }
 
+impl Integrator {
+    /// Both, in a fixed order.
+    pub const ALL: [Self; 2] = [Self::SymplecticEuler, Self::VelocityVerlet];
+
+    /// A short name for tables and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::SymplecticEuler => "symplectic_euler",
+            Self::VelocityVerlet => "velocity_verlet",
+        }
+    }
+}
+
+/// The contact force and torque on one sphere.
+pub type Load<F> = (Vec3<F>, Vec3<F>);
+
 /// Totals of one step's contacts.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct StepStats<F> {
@@ -246,7 +262,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
 
     /// The contact force and torque on sphere `index` from the last evaluation, `None` past the
     /// last sphere.
-    pub fn load(&self, index: usize) -> Option<(Vec3<L::Float>, Vec3<L::Float>)> {
+    pub fn load(&self, index: usize) -> Option<Load<L::Float>> {
         self.entries.get(index).map(SphereEntry::load)
     }
 

@@ -240,7 +240,7 @@ fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
         wall_law: &wall_law,
         gravity: Vec3::new(0.0, 0.0, -9.81),
         time_step: law.time_step(4e-6, mass / 2.0)?,
-        integrator: scene::Integrator::SymplecticEuler,
+        integrator: Integrator::SymplecticEuler,
     };
     bed.run(&input, 40_000, |_, _| {})?;
     bed.stop();
@@ -257,7 +257,7 @@ fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
 /// half a second has been spent).
 fn shake<F: Float, M: MathBackend<F>>(
     (bed, domain): (&[Sphere<f64>], &scene::Domain<f64>),
-    integrator: scene::Integrator,
+    integrator: Integrator,
     steps_per_contact: f64,
     repeats: usize,
 ) -> Result<((f64, f64), f64), Box<dyn Error>> {
@@ -320,8 +320,8 @@ fn scene_sweep(out_dir: &std::path::Path) -> Result<(), Box<dyn Error>> {
     eprintln!("settling the 1,000-sphere bed");
     let (bed, domain) = shaken_bed()?;
     let bed = (&bed[..], &domain);
-    let euler = scene::Integrator::SymplecticEuler;
-    let verlet = scene::Integrator::VelocityVerlet;
+    let euler = Integrator::SymplecticEuler;
+    let verlet = Integrator::VelocityVerlet;
     eprintln!("reference run (f64, libm, symplectic Euler, t_c/2000)");
     let (reference, _) = shake::<f64, Libm>(bed, euler, 2000.0, 1)?;
     let mut table = Table::new(&[
@@ -339,11 +339,11 @@ fn scene_sweep(out_dir: &std::path::Path) -> Result<(), Box<dyn Error>> {
     ));
     type Run = fn(
         (&[Sphere<f64>], &scene::Domain<f64>),
-        scene::Integrator,
+        Integrator,
         f64,
         usize,
     ) -> Result<((f64, f64), f64), Box<dyn Error>>;
-    let combos: [(&str, Run, scene::Integrator); 6] = [
+    let combos: [(&str, Run, Integrator); 6] = [
         ("f64_libm_euler", shake::<f64, Libm>, euler),
         ("f64_libm_verlet", shake::<f64, Libm>, verlet),
         ("f32_libm_euler", shake::<f32, Libm>, euler),

@@ -97,7 +97,27 @@ pub enum Model {
     ModelAA,
 }
 
+/// Something to do with one tangential law, whichever [`Model`] names it: see
+/// [`Model::with_law`].
+pub trait WithLaw {
+    /// What it gives.
+    type Output;
+    /// Does it with `tangential`.
+    fn run<T: TangentialModel<f64>>(self, tangential: T) -> Self::Output;
+}
+
 impl Model {
+    /// Runs `action` with this model's tangential law and parameters `p`.
+    pub fn with_law<A: WithLaw>(self, p: TangentialParameters<f64>, action: A) -> A::Output {
+        match self {
+            Self::Stateless => action.run(Stateless(p)),
+            Self::ModelA => action.run(ModelA(p)),
+            Self::ModelB => action.run(ModelB(p)),
+            Self::ModelC => action.run(ModelC(p)),
+            Self::ModelAA => action.run(ModelAA(p)),
+        }
+    }
+
     /// Every model.
     pub const ALL: [Self; 5] = [
         Self::Stateless,
@@ -151,14 +171,14 @@ pub fn impact(
         setup.friction,
     )
     .expect("valid tangential parameters");
-    let run = (setup, angle_deg, steps_per_contact, integrator);
-    match model {
-        Model::Stateless => impact_with(Stateless(p), run),
-        Model::ModelA => impact_with(ModelA(p), run),
-        Model::ModelB => impact_with(ModelB(p), run),
-        Model::ModelC => impact_with(ModelC(p), run),
-        Model::ModelAA => impact_with(ModelAA(p), run),
+    struct Impact<'s>(&'s Setup, f64, f64, Integrator);
+    impl WithLaw for Impact<'_> {
+        type Output = Outcome;
+        fn run<T: TangentialModel<f64>>(self, tangential: T) -> Outcome {
+            impact_with(tangential, (self.0, self.1, self.2, self.3))
+        }
     }
+    model.with_law(p, Impact(setup, angle_deg, steps_per_contact, integrator))
 }
 
 fn impact_with<T: TangentialModel<f64>>(

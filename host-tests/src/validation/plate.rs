@@ -2,11 +2,11 @@
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactLaw, Interaction, LinearSpringDashpot, ModelA, ModelAA, ModelB, ModelC, Sphere,
-    Stateless, TangentialModel, TangentialParameters, Vec3,
+    ContactLaw, Interaction, LinearSpringDashpot, Sphere, TangentialModel, TangentialParameters,
+    Vec3,
 };
 
-use super::kharaz::Model;
+use super::kharaz::{Model, WithLaw};
 use super::{CaseOutput, Table};
 use crate::analytic::rolling_onset;
 use crate::impact::floor;
@@ -50,13 +50,14 @@ pub struct Slide {
 pub fn slide(model: Model) -> Slide {
     let p = TangentialParameters::new(TANGENTIAL_STIFFNESS, DAMPING_RATIO, FRICTION)
         .expect("valid tangential parameters");
-    match model {
-        Model::Stateless => slide_with(Stateless(p)),
-        Model::ModelA => slide_with(ModelA(p)),
-        Model::ModelB => slide_with(ModelB(p)),
-        Model::ModelC => slide_with(ModelC(p)),
-        Model::ModelAA => slide_with(ModelAA(p)),
+    struct Plate;
+    impl WithLaw for Plate {
+        type Output = Slide;
+        fn run<T: TangentialModel<f64>>(self, tangential: T) -> Slide {
+            slide_with(tangential)
+        }
     }
+    model.with_law(p, Plate)
 }
 
 fn slide_with<T: TangentialModel<f64>>(tangential: T) -> Slide {

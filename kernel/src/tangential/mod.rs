@@ -101,8 +101,9 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
 ///
 /// The Coulomb limit is `mu |F_n|` with the normal force *including* its dashpot (as MFiX does).
 /// In an impact the dashpot adds to `F_n` while the spheres approach and pulls while they
-/// separate, so with `e < 1` the friction impulse is larger than rigid-body theory's `mu (1 + e)
-/// m v_n`: by 6.7 % at `e = 0.5` (`docs/physics.md`, section 3). The stateless law and Model AA
+/// separate, so with `e < 1` the impulse of the Coulomb limit is larger than rigid-body theory's
+/// `mu (1 + e) m v_n`: by 6.7 % at `e = 0.5` (`docs/physics.md`, section 3; the stateless law,
+/// which sticks for the first moments of contact, gives 6.3 % at 60 degrees). The stateless law and Model AA
 /// therefore match rigid-body theory's gross-sliding branch exactly only near `e = 1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TangentialParameters<F> {
