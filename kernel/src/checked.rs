@@ -35,15 +35,8 @@ impl<F: Float> CheckedSphere<F> {
     /// tests never see NaN), [`ContactError::NonPositiveRadius`], [`ContactError::NonPositiveMass`].
     #[inline(always)]
     pub fn new(sphere: Sphere<F>) -> Result<Self, ContactError> {
-        if !sphere.is_finite() {
-            Err(ContactError::NonFiniteInput)
-        } else if sphere.radius <= F::ZERO {
-            Err(ContactError::NonPositiveRadius)
-        } else if sphere.mass <= F::ZERO {
-            Err(ContactError::NonPositiveMass)
-        } else {
-            Ok(Self(sphere))
-        }
+        check(&sphere)?;
+        Ok(Self(sphere))
     }
 
     /// Applies `change` to a copy of the sphere and keeps the copy if it passes the checks of
@@ -97,5 +90,20 @@ impl<F: Float> TryFrom<Sphere<F>> for CheckedSphere<F> {
 
     fn try_from(sphere: Sphere<F>) -> Result<Self, ContactError> {
         Self::new(sphere)
+    }
+}
+
+/// The checks of [`CheckedSphere::new`], in place (the per-call path checks its spheres without
+/// copying them).
+#[inline(always)]
+pub(crate) fn check<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
+    if !sphere.is_finite() {
+        Err(ContactError::NonFiniteInput)
+    } else if sphere.radius <= F::ZERO {
+        Err(ContactError::NonPositiveRadius)
+    } else if sphere.mass <= F::ZERO {
+        Err(ContactError::NonPositiveMass)
+    } else {
+        Ok(())
     }
 }

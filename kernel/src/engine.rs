@@ -113,11 +113,28 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
 pub struct BoundLaw<'l, L: Law> {
     law: &'l L,
     time_step: TimeStep<L::Float>,
-    // Masses are positive, so the zeros an empty memo starts from never match.
-    pair_masses: [L::Float; 2],
-    pair: NormalOscillator<L::Float>,
-    wall_mass: L::Float,
-    wall: NormalOscillator<L::Float>,
+    pair: Memo<[L::Float; 2], NormalOscillator<L::Float>>,
+    wall: Memo<L::Float, NormalOscillator<L::Float>>,
+}
+
+/// The value derived from the last key. Masses are positive, so the zeros an empty memo starts
+/// from never match.
+#[derive(Clone, Copy, Debug)]
+struct Memo<K, V> {
+    key: K,
+    value: V,
+}
+
+impl<K: PartialEq, V> Memo<K, V> {
+    /// The value of `key`, derived by `derive` only when it differs from the last key.
+    #[inline(always)]
+    fn get(&mut self, key: K, derive: impl FnOnce(&K) -> V) -> &V {
+        if key != self.key {
+            self.value = derive(&key);
+            self.key = key;
+        }
+        &self.value
+    }
 }
 
 impl<'l, L: Law> BoundLaw<'l, L> {
@@ -125,10 +142,14 @@ impl<'l, L: Law> BoundLaw<'l, L> {
         Self {
             law,
             time_step,
-            pair_masses: [<L::Float as Float>::ZERO; 2],
-            pair: NormalOscillator::default(),
-            wall_mass: <L::Float as Float>::ZERO,
-            wall: NormalOscillator::default(),
+            pair: Memo {
+                key: [<L::Float as Float>::ZERO; 2],
+                value: NormalOscillator::default(),
+            },
+            wall: Memo {
+                key: <L::Float as Float>::ZERO,
+                value: NormalOscillator::default(),
+            },
         }
     }
 
@@ -182,13 +203,9 @@ impl<'l, L: Law> BoundLaw<'l, L> {
     pub(crate) fn pair_oscillator(
         &mut self,
         masses: [L::Float; 2],
-        derive: impl FnOnce([L::Float; 2]) -> NormalOscillator<L::Float>,
+        derive: impl FnOnce(&[L::Float; 2]) -> NormalOscillator<L::Float>,
     ) -> &NormalOscillator<L::Float> {
-        if masses != self.pair_masses {
-            self.pair_masses = masses;
-            self.pair = derive(masses);
-        }
-        &self.pair
+        self.pair.get(masses, derive)
     }
 
     /// The oscillator of a sphere of this mass against a wall; see
@@ -197,12 +214,8 @@ impl<'l, L: Law> BoundLaw<'l, L> {
     pub(crate) fn wall_oscillator(
         &mut self,
         mass: L::Float,
-        derive: impl FnOnce(L::Float) -> NormalOscillator<L::Float>,
+        derive: impl FnOnce(&L::Float) -> NormalOscillator<L::Float>,
     ) -> &NormalOscillator<L::Float> {
-        if mass != self.wall_mass {
-            self.wall_mass = mass;
-            self.wall = derive(mass);
-        }
-        &self.wall
+        self.wall.get(mass, derive)
     }
 }

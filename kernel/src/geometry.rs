@@ -2,8 +2,7 @@
 //! velocities, for sphere-sphere and sphere-wall contacts.
 
 use crate::backend::MathBackend;
-use crate::body::Wall;
-use crate::checked::CheckedSphere;
+use crate::body::{Sphere, Wall};
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::vector::Vec3;
@@ -35,12 +34,12 @@ pub(crate) struct ContactFrame<F> {
     pub angular_velocity_j: Vec3<F>,
 }
 
-/// The contact between checked spheres i and j, `None` when they do not overlap; only the
-/// coincident-centre test remains to be made.
+/// The contact between checked spheres i and j (see [`crate::checked::check`]), `None` when they
+/// do not overlap; only the coincident-centre test remains to be made.
 #[inline(always)]
 pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
-    i: &CheckedSphere<F>,
-    j: &CheckedSphere<F>,
+    i: &Sphere<F>,
+    j: &Sphere<F>,
     lever_arm: LeverArm,
 ) -> Result<Option<ContactFrame<F>>, ContactError> {
     let offset = j.position - i.position;
@@ -83,7 +82,7 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
 /// overlap.
 #[inline(always)]
 pub(crate) fn sphere_wall<F: Float>(
-    sphere: &CheckedSphere<F>,
+    sphere: &Sphere<F>,
     wall: &Wall<F>,
     lever_arm: LeverArm,
 ) -> Option<ContactFrame<F>> {

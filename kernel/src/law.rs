@@ -4,7 +4,7 @@ use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
 use crate::body::{Sphere, Wall, effective_mass};
-use crate::checked::CheckedSphere;
+use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
@@ -294,8 +294,11 @@ where
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let (i, j) = (CheckedSphere::new(*i)?, CheckedSphere::new(*j)?);
-        self.at(time_step).sphere_sphere(&i, &j, state)
+        checked::check(i)?;
+        checked::check(j)?;
+        let frame = geometry::sphere_sphere::<F, M>(i, j, self.lever_arm)?;
+        let oscillator = || self.normal.oscillator::<M>(effective_mass(i.mass, j.mass));
+        self.interaction(frame, oscillator, state, time_step)
     }
 
     /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step, checking
@@ -312,8 +315,10 @@ where
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
-        let sphere = CheckedSphere::new(*sphere)?;
-        self.at(time_step).sphere_wall(&sphere, wall, state)
+        checked::check(sphere)?;
+        let frame = geometry::sphere_wall(sphere, wall, self.lever_arm);
+        let oscillator = || self.normal.oscillator::<M>(sphere.mass);
+        self.interaction(frame, oscillator, state, time_step)
     }
 
     /// The law bound to a checked time step: it evaluates [`CheckedSphere`]s with no repeated
@@ -460,7 +465,7 @@ where
         let frame = geometry::sphere_wall(sphere, wall, law.lever_arm);
         let time_step = bound.time_step();
         let oscillator =
-            || *bound.wall_oscillator(sphere.mass, |mass| law.normal.oscillator::<M>(mass));
+            || *bound.wall_oscillator(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
         law.interaction(frame, oscillator, state, time_step)
     }
 }
