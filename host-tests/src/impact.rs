@@ -3,8 +3,8 @@
 
 use soft_sphere::motion::{advance_solid_sphere, drift, half_kick};
 use soft_sphere::{
-    ContactError, ContactForces, ContactLaw, Float, Interaction, MathBackend, NormalModel,
-    Rotation, Sphere, TangentialModel, TimeStep, Vec3, Wall,
+    CheckedSphere, ContactError, ContactForces, Float, Interaction, Law, Sphere, TimeStep, Vec3,
+    Wall,
 };
 
 /// What a wall impact produced.
@@ -48,21 +48,14 @@ pub fn incoming_sphere<F: Float>(radius: F, density: F, speed: f64, angle_deg: f
 /// # Errors
 /// The first [`ContactError`] the kernel returns; `Err(None)` when the sphere had not separated
 /// after `max_steps`.
-pub fn wall_impact<F, N, T, M, R>(
-    law: &ContactLaw<F, N, T, M, R>,
-    sphere: Sphere<F>,
-    wall: &Wall<F>,
-    time_step: TimeStep<F>,
+pub fn wall_impact<L: Law>(
+    law: &L,
+    sphere: Sphere<L::Float>,
+    wall: &Wall<L::Float>,
+    time_step: TimeStep<L::Float>,
     max_steps: usize,
-    observe: impl FnMut(&ContactForces<F>),
-) -> Result<ImpactOutcome<F>, Option<ContactError>>
-where
-    F: Float,
-    N: NormalModel<F>,
-    T: TangentialModel<F>,
-    M: MathBackend<F>,
-    R: Rotation,
-{
+    observe: impl FnMut(&ContactForces<L::Float>),
+) -> Result<ImpactOutcome<L::Float>, Option<ContactError>> {
     wall_impact_with(
         Integrator::SymplecticEuler,
         law,
@@ -79,24 +72,17 @@ where
 ///
 /// # Errors
 /// As [`wall_impact`].
-pub fn wall_impact_with<F, N, T, M, R>(
+pub fn wall_impact_with<L: Law>(
     integrator: Integrator,
-    law: &ContactLaw<F, N, T, M, R>,
-    mut sphere: Sphere<F>,
-    wall: &Wall<F>,
-    time_step: TimeStep<F>,
+    law: &L,
+    mut sphere: Sphere<L::Float>,
+    wall: &Wall<L::Float>,
+    time_step: TimeStep<L::Float>,
     max_steps: usize,
-    mut observe: impl FnMut(&ContactForces<F>),
-) -> Result<ImpactOutcome<F>, Option<ContactError>>
-where
-    F: Float,
-    N: NormalModel<F>,
-    T: TangentialModel<F>,
-    M: MathBackend<F>,
-    R: Rotation,
-{
+    mut observe: impl FnMut(&ContactForces<L::Float>),
+) -> Result<ImpactOutcome<L::Float>, Option<ContactError>> {
     let dt = time_step.seconds().to_f64();
-    let mut state = T::State::default();
+    let mut state = L::State::default();
     let mut touched = false;
     let mut steps_in_contact = 0;
     let mut max_overlap = 0.0f64;
@@ -113,8 +99,10 @@ where
                 step as f64 + 1.0
             }
         };
+        let checked = CheckedSphere::new(sphere).map_err(Some)?;
         let (force, torque) = match law
-            .sphere_wall(&sphere, wall, &mut state, time_step)
+            .at(time_step)
+            .sphere_wall(&checked, wall, &mut state)
             .map_err(Some)?
         {
             Interaction::Touching(forces) => {
@@ -171,26 +159,22 @@ pub struct Rebound {
 ///
 /// # Panics
 /// When the step is unstable or the sphere does not rebound: both are test failures.
-pub fn oblique_rebound<F, N, T, M, R>(
-    law: &ContactLaw<F, N, T, M, R>,
-    radius: F,
-    density: F,
+pub fn oblique_rebound<L: Law>(
+    law: &L,
+    radius: L::Float,
+    density: L::Float,
     speed: f64,
     angle_deg: f64,
     steps_per_contact: f64,
-    observe: impl FnMut(&ContactForces<F>),
-) -> Rebound
-where
-    F: Float,
-    N: NormalModel<F>,
-    T: TangentialModel<F>,
-    M: MathBackend<F>,
-    R: Rotation,
-{
+    observe: impl FnMut(&ContactForces<L::Float>),
+) -> Rebound {
     let sphere = incoming_sphere(radius, density, speed, angle_deg);
     let duration = law.contact_duration(sphere.mass);
     let dt = law
-        .time_step(duration / F::from_f64(steps_per_contact), sphere.mass)
+        .time_step(
+            duration / L::Float::from_f64(steps_per_contact),
+            sphere.mass,
+        )
         .expect("a stable step");
     let max_steps = 20 * steps_per_contact as usize;
     let out =
@@ -209,26 +193,24 @@ where
 ///
 /// # Errors
 /// The first [`ContactError`]; `Err(None)` when they are still touching after `max_steps`.
-pub fn pair_collision<F, N, T, M, R>(
-    law: &ContactLaw<F, N, T, M, R>,
-    mut i: Sphere<F>,
-    mut j: Sphere<F>,
-    time_step: TimeStep<F>,
+pub fn pair_collision<L: Law>(
+    law: &L,
+    mut i: Sphere<L::Float>,
+    mut j: Sphere<L::Float>,
+    time_step: TimeStep<L::Float>,
     max_steps: usize,
-    mut observe: impl FnMut(&ContactForces<F>, &Sphere<F>, &Sphere<F>),
-) -> Result<(Sphere<F>, Sphere<F>), Option<ContactError>>
-where
-    F: Float,
-    N: NormalModel<F>,
-    T: TangentialModel<F>,
-    M: MathBackend<F>,
-    R: Rotation,
-{
-    let mut state = T::State::default();
+    mut observe: impl FnMut(&ContactForces<L::Float>, &Sphere<L::Float>, &Sphere<L::Float>),
+) -> Result<[Sphere<L::Float>; 2], Option<ContactError>> {
+    let mut state = L::State::default();
     let mut touched = false;
     for _ in 0..max_steps {
+        let (a, b) = (
+            CheckedSphere::new(i).map_err(Some)?,
+            CheckedSphere::new(j).map_err(Some)?,
+        );
         match law
-            .sphere_sphere(&i, &j, &mut state, time_step)
+            .at(time_step)
+            .sphere_sphere(&a, &b, &mut state)
             .map_err(Some)?
         {
             Interaction::Touching(forces) => {
@@ -237,7 +219,7 @@ where
                 advance_solid_sphere(&mut i, forces.force_on_i(), forces.torque_on_i, time_step);
                 advance_solid_sphere(&mut j, forces.force_on_j(), forces.torque_on_j, time_step);
             }
-            Interaction::Apart if touched => return Ok((i, j)),
+            Interaction::Apart if touched => return Ok([i, j]),
             Interaction::Apart => {
                 advance_solid_sphere(&mut i, Vec3::ZERO, Vec3::ZERO, time_step);
                 advance_solid_sphere(&mut j, Vec3::ZERO, Vec3::ZERO, time_step);

@@ -304,7 +304,7 @@ fn extreme_sizes_and_mass_ratios_collide_cleanly() {
         );
         let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
         let before = kinetic(&i) + kinetic(&j);
-        let (i, j) = host_tests::impact::pair_collision(&law, i, j, dt, 1_000_000, |f, _, _| {
+        let [i, j] = host_tests::impact::pair_collision(&law, i, j, dt, 1_000_000, |f, _, _| {
             assert!(f.force_on_j().is_finite());
         })
         .expect("separates");

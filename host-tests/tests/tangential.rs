@@ -511,7 +511,7 @@ fn an_isolated_pair_keeps_its_momentum() {
         let m = effective_mass(i.mass, j.mass);
         let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
         let (p0, l0) = momenta(&i, &j);
-        let (a, b) = pair_collision(&law, i, j, dt, 100_000, |_, _, _| {}).unwrap();
+        let [a, b] = pair_collision(&law, i, j, dt, 100_000, |_, _, _| {}).unwrap();
         let (p1, l1) = momenta(&a, &b);
         let dp = (p1 - p0).norm_squared().sqrt() / p0.norm_squared().sqrt();
         let dl = (l1 - l0).norm_squared().sqrt() / l0.norm_squared().sqrt();
