@@ -55,7 +55,7 @@ pub struct Material {
     /// to 10).
     pub stiffness_ratio: f64,
     /// `eta_t / eta_n`, in `[0, 1]`.
-    pub damping_ratio: f64,
+    pub dashpot_ratio: f64,
     /// Peak overlap of a head-on impact at the approach speed as a fraction of the smaller radius,
     /// in `[1e-3, 0.05]`: sets `k_n`, so that every case is a soft-sphere contact of sensible depth.
     pub overlap_fraction: f64,
@@ -71,11 +71,11 @@ pub fn material() -> impl Strategy<Value = Material> {
         log_uniform(1e-3, 0.05),
     )
         .prop_map(
-            |(restitution, friction, stiffness_ratio, damping_ratio, overlap_fraction)| Material {
+            |(restitution, friction, stiffness_ratio, dashpot_ratio, overlap_fraction)| Material {
                 restitution,
                 friction,
                 stiffness_ratio,
-                damping_ratio,
+                dashpot_ratio,
                 overlap_fraction,
             },
         )

@@ -16,8 +16,8 @@ use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     ContactForces, ContactHistory, ContactKey, ContactLaw, Float, Frictionless, Interaction,
-    LeverArm, Libm, LinearSpringDashpot, Micromath, ModelA, ModelAA, ModelB, ModelC, Sphere,
-    SpringDisplacement, Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3,
+    LeverArm, Libm, LinearSpringDashpot, Micromath, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
+    Sphere, SpringDisplacement, Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3,
     effective_mass,
 };
 
@@ -77,7 +77,7 @@ fn law_for<F: Float, T: TangentialModel<F>>(
     };
     let p = TangentialParameters::new(
         F::from_f64(k_t),
-        F::from_f64(m.damping_ratio),
+        F::from_f64(m.dashpot_ratio),
         F::from_f64(m.friction),
     )
     .unwrap();
@@ -245,15 +245,18 @@ macro_rules! each_law {
         $property::<$F, _>("model_a", ModelA, $($arg),*)?;
         $property::<$F, _>("model_b", ModelB, $($arg),*)?;
         $property::<$F, _>("model_aa", ModelAA, $($arg),*)?;
+        $property::<$F, _>("model_aa_luding", ModelAALuding, $($arg),*)?;
     }};
 }
 
-/// The laws Elghannay & Tafti call correct (and frictionless contacts): the energy property must hold.
+/// The laws Elghannay & Tafti call correct, Luding's variant of Model AA, and frictionless
+/// contacts: the energy property must hold.
 macro_rules! each_sound_law {
     ($property:ident, $F:ty, $($arg:expr),*) => {{
         $property::<$F, _>("frictionless", |_| Frictionless, $($arg),*)?;
         $property::<$F, _>("stateless", Stateless, $($arg),*)?;
         $property::<$F, _>("model_aa", ModelAA, $($arg),*)?;
+        $property::<$F, _>("model_aa_luding", ModelAALuding, $($arg),*)?;
     }};
 }
 

@@ -8,8 +8,8 @@ use host_tests::impact::{oblique_rebound, pair_collision};
 use host_tests::precision::{bits, epsilon};
 use soft_sphere::{
     ContactForces, ContactLaw, Float, Frictionless, Interaction, LeverArm, LinearSpringDashpot,
-    Micromath, ModelA, ModelAA, ModelB, ModelC, Sphere, SpringDisplacement, Stateless,
-    TangentialModel, TangentialParameters, Vec3, effective_mass,
+    Micromath, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere, SpringDisplacement,
+    Stateless, TangentialModel, TangentialParameters, Vec3, effective_mass,
 };
 
 // Elghannay & Tafti's Kharaz setup (docs/physics.md, section 5.2).
@@ -21,12 +21,12 @@ const RESTITUTION: f64 = 0.98;
 
 fn parameters<F: Float>(
     stiffness: f64,
-    damping_ratio: f64,
+    dashpot_ratio: f64,
     friction: f64,
 ) -> TangentialParameters<F> {
     TangentialParameters::new(
         F::from_f64(stiffness),
-        F::from_f64(damping_ratio),
+        F::from_f64(dashpot_ratio),
         F::from_f64(friction),
     )
     .unwrap()
@@ -61,6 +61,7 @@ macro_rules! for_each_frictional_model {
         $check("model_a", ModelA(p));
         $check("model_b", ModelB(p));
         $check("model_aa", ModelAA(p));
+        $check("model_aa_luding", ModelAALuding(p));
     }};
 }
 
@@ -590,4 +591,58 @@ fn the_dashpot_in_the_coulomb_limit_adds_to_the_friction_impulse() {
             assert!(friction_impulse > 1.05 * rigid_body, "{friction_impulse}");
         }
     }
+}
+
+#[test]
+fn ludings_reset_leaves_spring_and_dashpot_equal_to_the_sliding_force() {
+    // A sphere sliding on the floor with a tangential dashpot: after every sliding step the kept
+    // spring satisfies -k_t xi - eta_t v_t = F_t (Luding 2008), so it differs from the plain cap
+    // by the dashpot term; without a dashpot the two rules keep the same spring.
+    let dashpot_ratio = 0.5;
+    let p = parameters::<f64>(860.0, dashpot_ratio, FRICTION);
+    let law = kharaz::<f64, _>(ModelAALuding(p));
+    let capped = kharaz::<f64, _>(ModelAA(p));
+    let floor = host_tests::impact::floor::<f64>();
+    let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, 0.9 * RADIUS), RADIUS, DENSITY);
+    sphere.velocity = Vec3::new(1.0, 0.0, -0.1);
+    let dt = law.time_step(1e-6, sphere.mass).unwrap();
+    let eta_n = law.oscillator(sphere.mass).damping_coefficient;
+    let (mut luding, mut cap) = (SpringDisplacement::default(), SpringDisplacement::default());
+    // The sphere is held in place: the spring grows by v_t dt each step until it slides.
+    let mut slid = 0;
+    for _ in 0..200 {
+        let Interaction::Touching(c) = law.sphere_wall(&sphere, &floor, &mut luding, dt).unwrap()
+        else {
+            panic!("touching")
+        };
+        capped.sphere_wall(&sphere, &floor, &mut cap, dt).unwrap();
+        if c.sliding {
+            slid += 1;
+            let spring_and_dashpot =
+                -(luding.displacement * 860.0) - c.slip_velocity * (dashpot_ratio * eta_n);
+            let gap = (spring_and_dashpot - c.tangential_force)
+                .norm_squared()
+                .sqrt();
+            assert!(
+                gap <= 1e-12 * c.tangential_force.norm_squared().sqrt(),
+                "{gap:e}"
+            );
+            // Both keep at most mu |F_n| / k_t; Luding's reset less, by the dashpot's share.
+            let limit = FRICTION * c.normal_force.abs() / 860.0;
+            let kept = cap.displacement.norm_squared().sqrt();
+            assert!(kept <= limit * (1.0 + 1e-12), "{kept:e} vs {limit:e}");
+            assert!(luding.displacement.norm_squared().sqrt() < limit);
+        }
+    }
+    assert!(slid > 100, "the held sphere slid ({slid} steps)");
+    // Without a dashpot both rules keep the same spring, bit for bit.
+    let p = parameters::<f64>(860.0, 0.0, FRICTION);
+    let (law, capped) = (
+        kharaz::<f64, _>(ModelAALuding(p)),
+        kharaz::<f64, _>(ModelAA(p)),
+    );
+    let (mut a, mut b) = (SpringDisplacement::default(), SpringDisplacement::default());
+    let ra = law.sphere_wall(&sphere, &floor, &mut a, dt).unwrap();
+    let rb = capped.sphere_wall(&sphere, &floor, &mut b, dt).unwrap();
+    assert_eq!((ra, a), (rb, b));
 }

@@ -12,7 +12,7 @@
 //!
 //! A [`ContactLaw`] is built from slots chosen at compile time: a normal law
 //! ([`LinearSpringDashpot`]), a tangential law ([`Frictionless`], [`Stateless`], [`ModelC`],
-//! [`ModelA`], [`ModelB`], [`ModelAA`]), a math backend ([`Libm`] by default, [`Micromath`] for
+//! [`ModelA`], [`ModelB`], [`ModelAA`], [`ModelAALuding`]), a math backend ([`Libm`] by default, [`Micromath`] for
 //! fast approximate `f32`) and rotation ([`Rotating`] by default, [`NonRotating`]). A frictionless
 //! or non-rotating law computes no slip velocity, tangential force or torque at all.
 //!
@@ -164,8 +164,8 @@ pub use normal::{LinearSpring, LinearSpringDashpot, NormalModel, NormalOscillato
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use store::{ContactHistory, ContactKey};
 pub use tangential::{
-    ContactState, Frictionless, ModelA, ModelAA, ModelB, ModelC, SpringDisplacement, Stateless,
-    TangentialModel, TangentialParameters,
+    ContactState, Frictionless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, SpringDisplacement,
+    Stateless, TangentialModel, TangentialParameters,
 };
 pub use time_step::TimeStep;
 pub use vector::Vec3;

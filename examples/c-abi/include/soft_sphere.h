@@ -90,6 +90,61 @@
 #define SS_MODEL_AA 1
 
 /**
+ * Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
+ */
+#define SS_MODEL_AA_LUDING 2
+
+/**
+ * No friction: normal force only (no tangential force, no torque, no state).
+ */
+#define SS_MODEL_FRICTIONLESS 3
+
+/**
+ * No parameter was rejected.
+ */
+#define SS_PARAMETER_NONE 0
+
+/**
+ * k_n.
+ */
+#define SS_PARAMETER_NORMAL_STIFFNESS 1
+
+/**
+ * e.
+ */
+#define SS_PARAMETER_RESTITUTION 2
+
+/**
+ * k_t.
+ */
+#define SS_PARAMETER_TANGENTIAL_STIFFNESS 3
+
+/**
+ * eta_t / eta_n.
+ */
+#define SS_PARAMETER_DASHPOT_RATIO 4
+
+/**
+ * mu.
+ */
+#define SS_PARAMETER_FRICTION 5
+
+/**
+ * The time step.
+ */
+#define SS_PARAMETER_TIME_STEP 6
+
+/**
+ * The smallest effective mass.
+ */
+#define SS_PARAMETER_MASS 7
+
+/**
+ * The model code.
+ */
+#define SS_PARAMETER_MODEL 8
+
+/**
  * A validated contact law and its checked time step (opaque to C).
  */
 typedef struct ss_law_f32 ss_law_f32;
@@ -104,7 +159,8 @@ typedef struct ss_law_f64 ss_law_f64;
  */
 typedef struct {
   /**
-   * `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+   * `SS_MODEL_STATELESS`, `SS_MODEL_AA`, `SS_MODEL_AA_LUDING` or `SS_MODEL_FRICTIONLESS` (which
+   * ignores the tangential parameters).
    */
   int32_t model;
   /**
@@ -249,7 +305,8 @@ typedef struct {
  */
 typedef struct {
   /**
-   * `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+   * `SS_MODEL_STATELESS`, `SS_MODEL_AA`, `SS_MODEL_AA_LUDING` or `SS_MODEL_FRICTIONLESS` (which
+   * ignores the tangential parameters).
    */
   int32_t model;
   /**
@@ -458,6 +515,26 @@ int32_t ss_advance_sphere_f64(const ss_law_f64 *law,
 int32_t ss_contact_duration_f64(const ss_params_f64 *params, double m_star, double *out);
 
 /**
+ * The largest stable time step (s) of the law `*params` describes, for contacts of
+ * `params->smallest_effective_mass` (its `time_step` is not used): the bound that
+ * `SS_ERR_UNSTABLE_TIME_STEP` enforces. `*out` is untouched on error.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_stability_limit_f64(const ss_params_f64 *params, double *out);
+
+/**
+ * Which parameter of `*params` the law's constructor rejects (`SS_PARAMETER_*`;
+ * `SS_PARAMETER_NONE` when it accepts them, or for a null pointer), so that a host can
+ * name it in its error message.
+ *
+ * # Safety
+ * `params` must be a valid pointer or null.
+ */
+int32_t ss_rejected_parameter_f64(const ss_params_f64 *params);
+
+/**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching
  * `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
  *
@@ -520,6 +597,26 @@ int32_t ss_advance_sphere_f32(const ss_law_f32 *law,
  * All pointers must be valid or null.
  */
 int32_t ss_contact_duration_f32(const ss_params_f32 *params, float m_star, float *out);
+
+/**
+ * The largest stable time step (s) of the law `*params` describes, for contacts of
+ * `params->smallest_effective_mass` (its `time_step` is not used): the bound that
+ * `SS_ERR_UNSTABLE_TIME_STEP` enforces. `*out` is untouched on error.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_stability_limit_f32(const ss_params_f32 *params, float *out);
+
+/**
+ * Which parameter of `*params` the law's constructor rejects (`SS_PARAMETER_*`;
+ * `SS_PARAMETER_NONE` when it accepts them, or for a null pointer), so that a host can
+ * name it in its error message.
+ *
+ * # Safety
+ * `params` must be a valid pointer or null.
+ */
+int32_t ss_rejected_parameter_f32(const ss_params_f32 *params);
 
 #ifdef __cplusplus
 }  // extern "C"

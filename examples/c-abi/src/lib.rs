@@ -2,8 +2,8 @@
 //! plain structs. Every entry point returns an error code (`SS_OK` = 0) and never unwinds into C;
 //! outputs are written only on success, so nothing the caller gave is half-updated.
 //!
-//! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law and Model AA
-//! (`SS_MODEL_*`). The per-contact state (`ss_state_*`) is the caller's: zero it for a new contact,
+//! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law, Model AA, Model
+//! AA with Luding's reset and frictionless contacts (`SS_MODEL_*`). The per-contact state (`ss_state_*`) is the caller's: zero it for a new contact,
 //! keep it while the contact lasts (the kernel resets it when the pair separates).
 //!
 //! The header `include/soft_sphere.h` is generated from this file by cbindgen; the test
@@ -14,8 +14,9 @@
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactError, ContactLaw, Float, Interaction, LinearSpringDashpot, ModelAA, ParameterError,
-    Sphere, SpringDisplacement, Stateless, TangentialParameters, TimeStep, Vec3, Wall,
+    ContactError, ContactLaw, Float, Frictionless, Interaction, LinearSpringDashpot, ModelAA,
+    ModelAALuding, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
+    TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -51,6 +52,51 @@ pub const SS_ERR_BAD_WALL: i32 = 13;
 pub const SS_MODEL_STATELESS: i32 = 0;
 /// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
 pub const SS_MODEL_AA: i32 = 1;
+/// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
+pub const SS_MODEL_AA_LUDING: i32 = 2;
+/// No friction: normal force only (no tangential force, no torque, no state).
+pub const SS_MODEL_FRICTIONLESS: i32 = 3;
+
+/// No parameter was rejected.
+pub const SS_PARAMETER_NONE: i32 = 0;
+/// k_n.
+pub const SS_PARAMETER_NORMAL_STIFFNESS: i32 = 1;
+/// e.
+pub const SS_PARAMETER_RESTITUTION: i32 = 2;
+/// k_t.
+pub const SS_PARAMETER_TANGENTIAL_STIFFNESS: i32 = 3;
+/// eta_t / eta_n.
+pub const SS_PARAMETER_DASHPOT_RATIO: i32 = 4;
+/// mu.
+pub const SS_PARAMETER_FRICTION: i32 = 5;
+/// The time step.
+pub const SS_PARAMETER_TIME_STEP: i32 = 6;
+/// The smallest effective mass.
+pub const SS_PARAMETER_MASS: i32 = 7;
+/// The model code.
+pub const SS_PARAMETER_MODEL: i32 = 8;
+
+/// Which parameter `error` is about, as an `SS_PARAMETER_*` code.
+fn rejected_parameter(error: ParameterError) -> i32 {
+    let parameter = match error {
+        ParameterError::NonFinite(p)
+        | ParameterError::NotPositive(p)
+        | ParameterError::Negative(p) => p,
+        ParameterError::RestitutionOutOfRange | ParameterError::ReboundUnreachable { .. } => {
+            Parameter::Restitution
+        }
+        ParameterError::TimeStepUnstable { .. } => Parameter::TimeStep,
+    };
+    match parameter {
+        Parameter::NormalStiffness => SS_PARAMETER_NORMAL_STIFFNESS,
+        Parameter::Restitution => SS_PARAMETER_RESTITUTION,
+        Parameter::TangentialStiffness => SS_PARAMETER_TANGENTIAL_STIFFNESS,
+        Parameter::DashpotRatio => SS_PARAMETER_DASHPOT_RATIO,
+        Parameter::Friction => SS_PARAMETER_FRICTION,
+        Parameter::TimeStep => SS_PARAMETER_TIME_STEP,
+        _ => SS_PARAMETER_MASS,
+    }
+}
 
 fn parameter_code(error: ParameterError) -> i32 {
     match error {
@@ -79,6 +125,8 @@ fn contact_code(error: ContactError) -> i32 {
 enum AnyLaw<F: Float> {
     Stateless(ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>),
     ModelAA(ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>),
+    ModelAALuding(ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>),
+    Frictionless(ContactLaw<F, LinearSpringDashpot<F>, Frictionless>),
 }
 
 /// A vector of three components.
@@ -153,7 +201,8 @@ pub struct ss_wall<F> {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ss_params<F> {
-    /// `SS_MODEL_STATELESS` or `SS_MODEL_AA`.
+    /// `SS_MODEL_STATELESS`, `SS_MODEL_AA`, `SS_MODEL_AA_LUDING` or `SS_MODEL_FRICTIONLESS` (which
+    /// ignores the tangential parameters).
     pub model: i32,
     /// k_n (N/m).
     pub normal_stiffness: F,
@@ -208,30 +257,78 @@ pub struct ss_law<F: Float> {
 }
 
 fn build_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
+    checked_law(p).map_err(|(code, _)| code)
+}
+
+/// The law `*p` describes, or the error code and the `SS_PARAMETER_*` it is about.
+fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
     let built = || -> Result<ss_law<F>, ParameterError> {
         let normal = LinearSpringDashpot::new(p.normal_stiffness, p.restitution)?;
+        let (dt, m) = (p.time_step, p.smallest_effective_mass);
+        if p.model == SS_MODEL_FRICTIONLESS {
+            let law = ContactLaw::new(normal, Frictionless);
+            let time_step = law.time_step(dt, m)?;
+            return Ok(ss_law {
+                law: AnyLaw::Frictionless(law),
+                time_step,
+            });
+        }
         let tangential =
             TangentialParameters::new(p.tangential_stiffness, p.dashpot_ratio, p.friction)?;
-        Ok(if p.model == SS_MODEL_STATELESS {
-            let law = ContactLaw::new(normal, Stateless(tangential));
-            let time_step = law.time_step(p.time_step, p.smallest_effective_mass)?;
-            ss_law {
-                law: AnyLaw::Stateless(law),
-                time_step,
+        Ok(match p.model {
+            SS_MODEL_STATELESS => {
+                let law = ContactLaw::new(normal, Stateless(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::Stateless(law),
+                    time_step,
+                }
             }
-        } else {
-            let law = ContactLaw::new(normal, ModelAA(tangential));
-            let time_step = law.time_step(p.time_step, p.smallest_effective_mass)?;
-            ss_law {
-                law: AnyLaw::ModelAA(law),
-                time_step,
+            SS_MODEL_AA_LUDING => {
+                let law = ContactLaw::new(normal, ModelAALuding(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::ModelAALuding(law),
+                    time_step,
+                }
+            }
+            _ => {
+                let law = ContactLaw::new(normal, ModelAA(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::ModelAA(law),
+                    time_step,
+                }
             }
         })
     };
-    if p.model != SS_MODEL_STATELESS && p.model != SS_MODEL_AA {
-        return Err(SS_ERR_UNKNOWN_MODEL);
+    let known = [
+        SS_MODEL_STATELESS,
+        SS_MODEL_AA,
+        SS_MODEL_AA_LUDING,
+        SS_MODEL_FRICTIONLESS,
+    ];
+    if !known.contains(&p.model) {
+        return Err((SS_ERR_UNKNOWN_MODEL, SS_PARAMETER_MODEL));
     }
-    built().map_err(parameter_code)
+    built().map_err(|e| (parameter_code(e), rejected_parameter(e)))
+}
+
+/// The stability limit of the law `*params` describes, for its smallest effective mass: what a
+/// host reports when `SS_ERR_UNSTABLE_TIME_STEP` refuses its step.
+fn limit_of<F: Float>(p: &ss_params<F>) -> Result<F, i32> {
+    let probe = ss_params {
+        time_step: F::MIN_POSITIVE,
+        ..*p
+    };
+    let law = build_law(&probe)?;
+    let m = p.smallest_effective_mass;
+    Ok(match law.law {
+        AnyLaw::Stateless(l) => l.critical_time_step(m),
+        AnyLaw::ModelAA(l) => l.critical_time_step(m),
+        AnyLaw::ModelAALuding(l) => l.critical_time_step(m),
+        AnyLaw::Frictionless(l) => l.critical_time_step(m),
+    })
 }
 
 /// # Safety
@@ -323,6 +420,8 @@ unsafe fn pair<F: Float>(
     let result = match &law.law {
         AnyLaw::Stateless(l) => l.sphere_sphere(&i, &j, &mut (), law.time_step),
         AnyLaw::ModelAA(l) => l.sphere_sphere(&i, &j, &mut spring, law.time_step),
+        AnyLaw::ModelAALuding(l) => l.sphere_sphere(&i, &j, &mut spring, law.time_step),
+        AnyLaw::Frictionless(l) => l.sphere_sphere(&i, &j, &mut (), law.time_step),
     };
     write_out(result, state, spring, out)
 }
@@ -360,6 +459,8 @@ unsafe fn on_wall<F: Float>(
     let result = match &law.law {
         AnyLaw::Stateless(l) => l.sphere_wall(&sphere, &plane, &mut (), law.time_step),
         AnyLaw::ModelAA(l) => l.sphere_wall(&sphere, &plane, &mut spring, law.time_step),
+        AnyLaw::ModelAALuding(l) => l.sphere_wall(&sphere, &plane, &mut spring, law.time_step),
+        AnyLaw::Frictionless(l) => l.sphere_wall(&sphere, &plane, &mut (), law.time_step),
     };
     // The kernel treats the sphere as body i against a wall: report its force as the one on j,
     // so that `force_on_j` and `torque_on_j` are always what the sphere receives.
@@ -407,10 +508,39 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
     }
     match LinearSpringDashpot::new(p.normal_stiffness, p.restitution) {
         Ok(normal) => {
-            *out = ContactLaw::new(normal, soft_sphere::Frictionless).contact_duration(m_star);
+            *out = ContactLaw::new(normal, Frictionless).contact_duration(m_star);
             SS_OK
         }
         Err(e) => parameter_code(e),
+    }
+}
+
+/// # Safety
+/// As the exported stability-limit calls.
+unsafe fn stability_limit<F: Float>(params: *const ss_params<F>, out: *mut F) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(p), Some(out)) = (unsafe { (params.as_ref(), out.as_mut()) }) else {
+        return SS_ERR_NULL;
+    };
+    match limit_of(p) {
+        Ok(limit) => {
+            *out = limit;
+            SS_OK
+        }
+        Err(code) => code,
+    }
+}
+
+/// # Safety
+/// As the exported rejected-parameter calls.
+unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(p) = (unsafe { params.as_ref() }) else {
+        return SS_PARAMETER_NONE;
+    };
+    match checked_law(p) {
+        Ok(_) => SS_PARAMETER_NONE,
+        Err((_, parameter)) => parameter,
     }
 }
 
@@ -418,7 +548,7 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $advance:ident, $duration:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -507,8 +637,32 @@ macro_rules! entry_points {
             // SAFETY: forwarded contract.
             unsafe { duration(params, m_star, out) }
         }
+
+        /// The largest stable time step (s) of the law `*params` describes, for contacts of
+        /// `params->smallest_effective_mass` (its `time_step` is not used): the bound that
+        /// `SS_ERR_UNSTABLE_TIME_STEP` enforces. `*out` is untouched on error.
+        ///
+        /// # Safety
+        /// All pointers must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $limit(params: *const ss_params<$real>, out: *mut $real) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { stability_limit(params, out) }
+        }
+
+        /// Which parameter of `*params` the law's constructor rejects (`SS_PARAMETER_*`;
+        /// `SS_PARAMETER_NONE` when it accepts them, or for a null pointer), so that a host can
+        /// name it in its error message.
+        ///
+        /// # Safety
+        /// `params` must be a valid pointer or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $rejected(params: *const ss_params<$real>) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { rejected(params) }
+        }
     };
 }
 
-entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_advance_sphere_f64, ss_contact_duration_f64);
-entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_advance_sphere_f32, ss_contact_duration_f32);
+entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
+entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);

@@ -254,8 +254,10 @@ fn main() -> Result<(), Box<dyn Error>> {
             &domain,
             o.column.density,
         )?;
-        std::fs::write(dir.join("in.scene"), lammps_deck(mass, o.steps))?;
-        eprintln!("wrote {}/packing.data and in.scene", dir.display());
+        let native = lammps_deck(mass, o.steps);
+        std::fs::write(dir.join("in.scene"), &native)?;
+        std::fs::write(dir.join("in.plugin"), plugin_deck(&native, mass))?;
+        eprintln!("wrote {}/packing.data, in.scene and in.plugin", dir.display());
     }
     let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION)?;
     let wall_normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?;
@@ -349,6 +351,29 @@ fn main() -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// The same scene with the soft-sphere plugin (`examples/lammps`): `pair_style soft/sphere aa` and
+/// `fix wall/soft/sphere aa` in place of the native styles, the floor at the restitution that gives
+/// it the pairs' `eta_n`. The plugin's path comes in as the LAMMPS variable `plugin`.
+fn plugin_deck(native: &str, mass: f64) -> String {
+    let wall_e = wall_restitution_for_same_dashpot(RESTITUTION, mass / 2.0, mass);
+    let k_t = 2.0 / 7.0 * NORMAL_STIFFNESS;
+    let law = |e: f64| format!("aa {NORMAL_STIFFNESS} {e:e} {k_t:e} {DASHPOT_RATIO} {FRICTION}");
+    native
+        .lines()
+        .map(|line| {
+            if line.starts_with("pair_style") {
+                format!("plugin load ${{plugin}}\npair_style soft/sphere {}", law(RESTITUTION))
+            } else if line.starts_with("fix floor") {
+                format!("fix floor all wall/soft/sphere {} zplane 0.0 NULL", law(wall_e))
+            } else {
+                line.replace("soft-sphere reference scene.", "soft-sphere reference scene, plugin styles.")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\n"
+}
+
 /// The same physics for LAMMPS: `gran/hooke/history` with `gamma_n` chosen so that the pair
 /// dashpot `m* gamma_n` equals the kernel's `eta_n` at e = 0.9, and the floor's `gamma_n` halved so
 /// that `m gamma_n` is the same `eta_n` (the issue's "same eta_n for the floor").
@@ -380,7 +405,7 @@ fn lammps_deck(mass: f64, steps: usize) -> String {
          compute contacts all contact/atom\n\
          compute total_contacts all reduce sum c_contacts\n\
          thermo_style custom step ke c_rotational c_total_contacts\n\
-         thermo_modify format float %.10e\n\
+         thermo_modify format float %.16e\n\
          thermo {steps}\n\
          run {steps}\n",
         gw = gamma_n / 2.0,

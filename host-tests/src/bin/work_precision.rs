@@ -44,7 +44,7 @@ fn sweep<F: Float, M: MathBackend<F>>(
     let normal = LinearSpringDashpot::new(f(TALK.normal_stiffness), f(TALK.restitution)).unwrap();
     let p = TangentialParameters::new(
         f(TALK.tangential_stiffness),
-        f(TALK.damping_ratio),
+        f(TALK.dashpot_ratio),
         f(TALK.friction),
     )
     .unwrap();

@@ -2,8 +2,8 @@
 //! experiment, rigid-body theory, the MFiX DEM05 linear-model reference, and itself at a fine step.
 
 use soft_sphere::{
-    ContactLaw, LinearSpringDashpot, ModelA, ModelAA, ModelB, ModelC, Stateless, TangentialModel,
-    TangentialParameters,
+    ContactLaw, LinearSpringDashpot, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Stateless,
+    TangentialModel, TangentialParameters,
 };
 
 use super::{CaseOutput, Cell, Table, rms};
@@ -29,7 +29,7 @@ pub struct Setup {
     /// Coulomb friction mu.
     pub friction: f64,
     /// eta_t / eta_n.
-    pub damping_ratio: f64,
+    pub dashpot_ratio: f64,
 }
 
 /// Elghannay & Tafti's parameters (docs/physics.md, sections 5.2 and 5.4, eta_t = 0).
@@ -41,7 +41,7 @@ pub const TALK: Setup = Setup {
     tangential_stiffness: 860.0,
     restitution: 0.98,
     friction: 0.092,
-    damping_ratio: 0.0,
+    dashpot_ratio: 0.0,
 };
 
 /// The MFiX DEM05 inputs behind `linear_model_reference_mfix_dem05.csv`.
@@ -53,7 +53,7 @@ pub const MFIX_DEM05: Setup = Setup {
     tangential_stiffness: 1.48e7,
     restitution: 1.0,
     friction: 0.092,
-    damping_ratio: 0.0,
+    dashpot_ratio: 0.0,
 };
 
 impl Setup {
@@ -70,7 +70,7 @@ impl Setup {
             self.tangential_stiffness,
             self.restitution,
             self.friction,
-            self.damping_ratio
+            self.dashpot_ratio
         )
     }
 
@@ -95,6 +95,8 @@ pub enum Model {
     ModelC,
     /// Model AA (stored spring, limited).
     ModelAA,
+    /// Model AA with Luding's reset.
+    ModelAALuding,
 }
 
 /// Something to do with one tangential law, whichever [`Model`] names it: see
@@ -115,16 +117,18 @@ impl Model {
             Self::ModelB => action.run(ModelB(p)),
             Self::ModelC => action.run(ModelC(p)),
             Self::ModelAA => action.run(ModelAA(p)),
+            Self::ModelAALuding => action.run(ModelAALuding(p)),
         }
     }
 
     /// Every model.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::Stateless,
         Self::ModelA,
         Self::ModelB,
         Self::ModelC,
         Self::ModelAA,
+        Self::ModelAALuding,
     ];
 
     /// The name used in file names and tables.
@@ -135,6 +139,7 @@ impl Model {
             Self::ModelB => "model_b",
             Self::ModelC => "model_c",
             Self::ModelAA => "model_aa",
+            Self::ModelAALuding => "model_aa_luding",
         }
     }
 }
@@ -167,7 +172,7 @@ pub fn impact(
 ) -> Outcome {
     let p = TangentialParameters::new(
         setup.tangential_stiffness,
-        setup.damping_ratio,
+        setup.dashpot_ratio,
         setup.friction,
     )
     .expect("valid tangential parameters");

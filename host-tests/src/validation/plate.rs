@@ -2,8 +2,8 @@
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactLaw, Interaction, LinearSpringDashpot, Sphere, TangentialModel, TangentialParameters,
-    Vec3,
+    ContactLaw, Frictionless, Interaction, LinearSpringDashpot, Sphere, TangentialModel,
+    TangentialParameters, Vec3,
 };
 
 use super::kharaz::{Model, WithLaw};
@@ -11,24 +11,37 @@ use super::{CaseOutput, Table};
 use crate::analytic::rolling_onset;
 use crate::impact::floor;
 
-/// Elghannay & Tafti's plate case (docs/physics.md, section 5.3).
-const RADIUS: f64 = 5.0e-3;
-const DENSITY: f64 = 2500.0;
-const INITIAL_SPEED: f64 = 1.0;
-const FRICTION: f64 = 0.7;
-const GRAVITY: f64 = 9.81;
-const NORMAL_STIFFNESS: f64 = 1000.0;
-const TANGENTIAL_STIFFNESS: f64 = 860.0;
-const RESTITUTION: f64 = 0.9;
+// Elghannay & Tafti's plate case (docs/physics.md, section 5.3).
+/// Sphere radius (m).
+pub const RADIUS: f64 = 5.0e-3;
+/// Density (kg/m3).
+pub const DENSITY: f64 = 2500.0;
+/// Initial sliding speed (m/s).
+pub const INITIAL_SPEED: f64 = 1.0;
+/// Friction coefficient.
+pub const FRICTION: f64 = 0.7;
+/// Gravity (m/s2).
+pub const GRAVITY: f64 = 9.81;
+/// k_n (N/m).
+pub const NORMAL_STIFFNESS: f64 = 1000.0;
+/// k_t (N/m).
+pub const TANGENTIAL_STIFFNESS: f64 = 860.0;
+/// e.
+pub const RESTITUTION: f64 = 0.9;
 /// eta_t / eta_n: MFiX's default, so that the stored spring's oscillation after the stick decays.
-const DAMPING_RATIO: f64 = 0.5;
+pub const DASHPOT_RATIO: f64 = 0.5;
 const STEPS_PER_CONTACT: f64 = 50.0;
 const DURATION: f64 = 0.1;
 /// Rolling has begun when the slip `u - w R` first falls to this fraction of `u0`.
 const ROLLING_SLIP: f64 = 1e-3;
 
 /// Models that must roll at 5/7 on time (A and C are shown as they are).
-pub const PASSING: [Model; 3] = [Model::ModelAA, Model::ModelB, Model::Stateless];
+pub const PASSING: [Model; 4] = [
+    Model::ModelAA,
+    Model::ModelAALuding,
+    Model::ModelB,
+    Model::Stateless,
+];
 /// Relative tolerance on the final ratios against 5/7.
 pub const RATIO_TOLERANCE: f64 = 5e-3;
 /// Relative tolerance on the rolling onset against `2 u0 / (7 mu g)`.
@@ -48,7 +61,7 @@ pub struct Slide {
 /// # Panics
 /// When the kernel rejects the setup or the sphere leaves the plate: a validation failure.
 pub fn slide(model: Model) -> Slide {
-    let p = TangentialParameters::new(TANGENTIAL_STIFFNESS, DAMPING_RATIO, FRICTION)
+    let p = TangentialParameters::new(TANGENTIAL_STIFFNESS, DASHPOT_RATIO, FRICTION)
         .expect("valid tangential parameters");
     struct Plate;
     impl WithLaw for Plate {
@@ -60,21 +73,24 @@ pub fn slide(model: Model) -> Slide {
     model.with_law(p, Plate)
 }
 
+/// The run's step (s), its number of steps, and the sphere's starting height (m): at the static
+/// overlap `m g / k_n`, so that it does not bounce.
+pub fn timing() -> (f64, usize, f64) {
+    let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION).expect("valid");
+    let mass = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass;
+    let dt = ContactLaw::new(normal, Frictionless).contact_duration(mass) / STEPS_PER_CONTACT;
+    let static_overlap = mass * GRAVITY / NORMAL_STIFFNESS;
+    (dt, (DURATION / dt).ceil() as usize, RADIUS - static_overlap)
+}
+
 fn slide_with<T: TangentialModel<f64>>(tangential: T) -> Slide {
     let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION).expect("valid");
     let law = ContactLaw::new(normal, tangential);
     let mass = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass;
-    // Start at the static overlap so the sphere does not bounce.
-    let static_overlap = mass * GRAVITY / NORMAL_STIFFNESS;
-    let mut sphere = Sphere::solid(
-        Vec3::new(0.0, 0.0, RADIUS - static_overlap),
-        RADIUS,
-        DENSITY,
-    );
+    let (seconds, steps, height) = timing();
+    let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, height), RADIUS, DENSITY);
     sphere.velocity = Vec3::new(INITIAL_SPEED, 0.0, 0.0);
-    let dt = law
-        .time_step(law.contact_duration(mass) / STEPS_PER_CONTACT, mass)
-        .expect("a stable step");
+    let dt = law.time_step(seconds, mass).expect("a stable step");
     let weight = Vec3::new(0.0, 0.0, -mass * GRAVITY);
     let wall = floor();
     let mut state = T::State::default();
@@ -86,7 +102,6 @@ fn slide_with<T: TangentialModel<f64>>(tangential: T) -> Slide {
     };
     let mut series = vec![[0.0, 1.0, 0.0]];
     let mut rolling_onset = None;
-    let steps = (DURATION / dt.seconds()).ceil() as usize;
     for step in 1..=steps {
         let (force, torque) = match law.sphere_wall(&sphere, &wall, &mut state, dt) {
             Ok(Interaction::Touching(c)) => (c.force_on_i(), c.torque_on_i),
@@ -139,7 +154,7 @@ pub fn case(mut progress: impl FnMut(&str)) -> CaseOutput {
                 "sphere sliding on a plate, {}: d = {} m, density = {DENSITY} kg/m3, u0 = \
                  {INITIAL_SPEED} m/s, mu = {FRICTION}, g = {GRAVITY} m/s2, k_n = \
                  {NORMAL_STIFFNESS} N/m, k_t = {TANGENTIAL_STIFFNESS} N/m, e = {RESTITUTION}, \
-                 eta_t/eta_n = {DAMPING_RATIO}, dt = t_c/{STEPS_PER_CONTACT}, symplectic Euler, \
+                 eta_t/eta_n = {DASHPOT_RATIO}, dt = t_c/{STEPS_PER_CONTACT}, symplectic Euler, \
                  starting at the static overlap",
                 model.name(),
                 2.0 * RADIUS

@@ -1,6 +1,7 @@
-//! The three laws that store the tangential spring's displacement between steps: Models A, B
-//! and AA. They share the update (rotate the stored displacement into the current tangent plane,
-//! then add `v_t dt`) and differ in the sliding rule and in what they keep after sliding.
+//! The laws that store the tangential spring's displacement between steps: Models A, B, AA and
+//! AA with Luding's reset. They share the update (rotate the stored displacement into the current
+//! tangent plane, then add `v_t dt`) and differ in the sliding rule and in what they keep after
+//! sliding.
 
 use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
@@ -44,29 +45,45 @@ pub fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     projected * M::sqrt(displacement.norm_squared() / projected_squared)
 }
 
-/// The shared step of the stored-spring laws. `limited` caps the kept displacement at
-/// `mu |F_n| / k_t` after a sliding step (Model AA); without it the spring grows without bound.
+/// What a stored-spring law keeps of its displacement after a sliding step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Keep {
+    /// All of it: the spring grows without bound (Models A and B).
+    Everything,
+    /// At most `mu |F_n| / k_t` of it (Model AA).
+    Capped,
+    /// The displacement whose spring and dashpot give the sliding force:
+    /// `xi = -(F_t + eta_t v_t) / k_t` (Luding 2008).
+    Luding,
+}
+
+/// The shared step of the stored-spring laws; `keep` says what is kept after a sliding step.
 #[inline(always)]
 fn stored_spring_step<F: Float, M: MathBackend<F>>(
     parameters: &TangentialParameters<F>,
     state: &SpringDisplacement<F>,
     contact: &TangentialInput<F>,
     slide: Slide,
-    limited: bool,
+    keep: Keep,
 ) -> TangentialOutput<F, SpringDisplacement<F>> {
     let displacement = rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal)
         + contact.slip_velocity * contact.time_step;
     let (force, sliding) = parameters.slide::<M>(displacement, contact, slide);
-    let kept = if limited && sliding {
-        let longest = parameters.limit(contact) / parameters.stiffness();
-        let length_squared = displacement.norm_squared();
-        if length_squared > longest * longest {
-            displacement * (longest * M::inv_sqrt(length_squared))
-        } else {
-            displacement
+    let kept = match keep {
+        Keep::Capped if sliding => {
+            let longest = parameters.limit(contact) / parameters.stiffness();
+            let length_squared = displacement.norm_squared();
+            if length_squared > longest * longest {
+                displacement * (longest * M::inv_sqrt(length_squared))
+            } else {
+                displacement
+            }
         }
-    } else {
-        displacement
+        Keep::Luding if sliding => {
+            -(force + contact.slip_velocity * parameters.dashpot(&contact.oscillator))
+                * (F::ONE / parameters.stiffness())
+        }
+        _ => displacement,
     };
     TangentialOutput {
         force,
@@ -76,7 +93,7 @@ fn stored_spring_step<F: Float, M: MathBackend<F>>(
 }
 
 macro_rules! stored_spring_model {
-    ($(#[$doc:meta])* $name:ident, $slide:expr, $limited:expr) => {
+    ($(#[$doc:meta])* $name:ident, $slide:expr, $keep:expr) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, PartialEq)]
         pub struct $name<F>(pub TangentialParameters<F>);
@@ -90,7 +107,7 @@ macro_rules! stored_spring_model {
                 state: &SpringDisplacement<F>,
                 contact: &TangentialInput<F>,
             ) -> TangentialOutput<F, SpringDisplacement<F>> {
-                stored_spring_step::<F, M>(&self.0, state, contact, $slide, $limited)
+                stored_spring_step::<F, M>(&self.0, state, contact, $slide, $keep)
             }
 
             fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
@@ -106,7 +123,7 @@ stored_spring_model!(
     /// rolling sphere backwards and exaggerates spin; shown here so that failure can be measured.
     ModelA,
     Slide::AlongTrial,
-    false
+    Keep::Everything
 );
 
 stored_spring_model!(
@@ -115,16 +132,27 @@ stored_spring_model!(
     /// small impact angles and misses the elastic recoil; shown so that failure can be measured.
     ModelB,
     Slide::AgainstSlip,
-    false
+    Keep::Everything
 );
 
 stored_spring_model!(
     /// Model AA (Elghannay & Tafti's proper implementation): Model A's sliding force, with the stored
     /// displacement limited to `mu |F_n| / k_t` after every sliding step, as a deformation must be.
     /// Reproduces the Kharaz oblique-impact data including the recoil dip near 20 degrees, and
-    /// rolling at 5/7 on a plate. This is the plain displacement cap, not Luding's variant (which
-    /// subtracts the dashpot force before capping).
+    /// rolling at 5/7 on a plate. This is the plain displacement cap; [`ModelAALuding`] is
+    /// Luding's variant.
     ModelAA,
     Slide::AlongTrial,
-    true
+    Keep::Capped
+);
+
+stored_spring_model!(
+    /// Model AA with Luding's reset (Luding 2008; LAMMPS `gran/hooke/history`, `pair granular`
+    /// `linear_history`): Model A's sliding force, and after a sliding step the stored displacement
+    /// set so that spring plus dashpot equal the sliding force, `xi = -(F_t + eta_t v_t) / k_t`.
+    /// It differs from [`ModelAA`]'s plain cap through the dashpot term only, and equals it
+    /// without a tangential dashpot.
+    ModelAALuding,
+    Slide::AlongTrial,
+    Keep::Luding
 );

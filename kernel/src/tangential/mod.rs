@@ -10,6 +10,7 @@
 //! | [`ModelA`] (Cundall & Strack) | stored | along the trial force | grows without bound |
 //! | [`ModelB`] (Tsuji et al.) | stored | against the slip | grows without bound |
 //! | [`ModelAA`] (Elghannay & Tafti's proper implementation) | stored | along the trial force | limited to `mu |F_n| / k_t` |
+//! | [`ModelAALuding`] (Luding 2008) | stored | along the trial force | `-(F_t + eta_t v_t) / k_t` |
 //!
 //! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = r eta_n` (`r` the dashpot ratio); the contact sticks
 //! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
@@ -21,7 +22,9 @@ mod model_c;
 mod stateless;
 
 pub use frictionless::Frictionless;
-pub use history::{ModelA, ModelAA, ModelB, SpringDisplacement, rotate_into_tangent_plane};
+pub use history::{
+    ModelA, ModelAA, ModelAALuding, ModelB, SpringDisplacement, rotate_into_tangent_plane,
+};
 pub use model_c::ModelC;
 pub use stateless::{Stateless, elapsed_contact_time};
 

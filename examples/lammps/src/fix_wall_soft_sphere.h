@@ -1,0 +1,47 @@
+/* fix ID GROUP wall/soft/sphere LAW k_n e k_t eta_ratio mu {x,y,z}plane LO HI: flat walls at
+ * LO and HI (either may be NULL) that act on the group's spheres with the soft-sphere kernel's
+ * law. Each sphere's stored spring against each wall is per-atom state of this fix, so it
+ * follows the atom between ranks.
+ *
+ * Part of the soft-sphere LAMMPS plugin. License: GPL-2.0-or-later (it links LAMMPS). */
+
+#ifndef LMP_FIX_WALL_SOFT_SPHERE_H
+#define LMP_FIX_WALL_SOFT_SPHERE_H
+
+#include "fix.h"
+#include "soft_sphere.h"
+
+namespace LAMMPS_NS {
+
+class FixWallSoftSphere : public Fix {
+ public:
+  FixWallSoftSphere(class LAMMPS *, int, char **);
+  ~FixWallSoftSphere() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+
+ private:
+  static constexpr int WALLS = 2;    // LO and HI
+  static constexpr int VALUES = 3 * WALLS;
+  ss_params_f64 params;
+  ss_law_f64 *law;
+  int axis;              // 0, 1, 2 for xplane, yplane, zplane
+  int present[WALLS];    // whether LO and HI exist
+  double position[WALLS];
+  double **history;      // per atom: the stored spring against LO, then HI
+  bool advance;
+
+  void forces();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
