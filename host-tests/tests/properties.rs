@@ -249,14 +249,13 @@ macro_rules! each_law {
     }};
 }
 
-/// The laws Elghannay & Tafti call correct, Luding's variant of Model AA, and frictionless
-/// contacts: the energy property must hold.
+/// The laws Elghannay & Tafti call correct, and frictionless contacts: the energy property must
+/// hold. (Luding's variant of Model AA is searched and reported with Models A, B and C.)
 macro_rules! each_sound_law {
     ($property:ident, $F:ty, $($arg:expr),*) => {{
         $property::<$F, _>("frictionless", |_| Frictionless, $($arg),*)?;
         $property::<$F, _>("stateless", Stateless, $($arg),*)?;
         $property::<$F, _>("model_aa", ModelAA, $($arg),*)?;
-        $property::<$F, _>("model_aa_luding", ModelAALuding, $($arg),*)?;
     }};
 }
 
@@ -643,6 +642,7 @@ fn energy_search_on_models_a_b_c_reports_what_it_finds() {
         ("model_b", worst(ModelB, &cases)),
         ("model_c", worst(ModelC, &cases)),
         ("model_aa", worst(ModelAA, &cases)),
+        ("model_aa_luding", worst(ModelAALuding, &cases)),
     ];
     for (name, (after, during)) in results {
         println!(
@@ -651,13 +651,17 @@ fn energy_search_on_models_a_b_c_reports_what_it_finds() {
         );
     }
     let find = |name: &str| results.iter().find(|r| r.0 == name).unwrap().1;
-    // Model A creates kinetic energy (13 % in the seeded search): its unbounded spring recoils.
+    // Model A creates kinetic energy (15 % in the seeded search): its unbounded spring recoils.
     assert!(find("model_a").0 > 0.05);
     // A and B store spring energy far beyond what the collision brought (87 x): xi grows
     // without bound while sliding, though B's force direction keeps the rebound dissipative.
     assert!(find("model_a").1 > 10.0 && find("model_b").1 > 10.0);
     // Model C is a pure dashpot on the slip: it can only dissipate.
     assert!(find("model_c").0 <= ENERGY_TOLERANCE);
+    // Luding's reset creates no kinetic energy either, but the spring it keeps balances the
+    // tangential dashpot, so what it stores can exceed what the collision brought (77 x found).
+    assert!(find("model_aa_luding").0 <= ENERGY_TOLERANCE);
+    assert!(find("model_aa_luding").1 > 1.0);
     // Model AA, the reference, stays within the tolerance on the same cases.
     assert!(find("model_aa").0 <= ENERGY_TOLERANCE);
     assert!(find("model_aa").1 <= CONTACT_ENERGY_TOLERANCE);

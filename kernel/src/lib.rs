@@ -79,8 +79,9 @@
 //!   before by at most 1e-3 at the recommended step (plus f32 position rounding, below); with
 //!   `e = 1, mu = 0` it is conserved to that; in contact, kinetic plus stored spring energy rises by
 //!   at most 8 % (symplectic Euler's oscillation at `t_c/50`). Models A and B store spring energy
-//!   without bound while sliding, and Model A creates kinetic energy (13 % found): documented, not
-//!   guaranteed. (property `energy_is_never_created`, `energy_search_on_models_a_b_c_reports_what_it_finds`;
+//!   without bound while sliding, and Model A creates kinetic energy (15 % found): documented, not
+//!   guaranteed; [`ModelAALuding`] creates no kinetic energy in the same search, but its reset can
+//!   store a spring far beyond the impact's energy. (property `energy_is_never_created`, `energy_search_on_models_a_b_c_reports_what_it_finds`;
 //!   grazing and head-on wall impacts in `stress.rs`)
 //! - **Normal impact.** A free binary impact rebounds with ratio `e` and lasts
 //!   `t_c = pi / sqrt(k_n/m* - (eta_n / 2m*)^2)`; with the attraction clamp it rebounds with

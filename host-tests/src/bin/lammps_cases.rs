@@ -15,19 +15,32 @@ use host_tests::validation::plate;
 use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot};
 
 /// The deck of one sphere against the floor `zplane 0`, reporting its final velocity and spin.
-fn deck(plugin: &str, wall: &str, sphere: [f64; 8], (dt, steps): (f64, usize), gravity: bool) -> String {
+fn deck(
+    plugin: &str,
+    wall: &str,
+    sphere: [f64; 8],
+    (dt, steps): (f64, usize),
+    gravity: bool,
+) -> String {
     let [z, vx, vz, diameter, density, box_half, top, _] = sphere;
     let mut d = String::new();
     let _ = writeln!(
         d,
         "units si\natom_style sphere\natom_modify map array\nboundary f f f\ncomm_modify vel yes"
     );
-    let _ = writeln!(d, "region box block {} {} {} {} -0.001 {top}", -box_half, box_half, -box_half, box_half);
+    let _ = writeln!(
+        d,
+        "region box block {} {} {} {} -0.001 {top}",
+        -box_half, box_half, -box_half, box_half
+    );
     let _ = writeln!(d, "create_box 1 box\ncreate_atoms 1 single 0 0 {z:e}");
     let _ = writeln!(d, "set atom 1 diameter {diameter:e} density {density:e}");
     let _ = writeln!(d, "velocity all set {vx:e} 0 {vz:e}");
     let _ = writeln!(d, "plugin load {plugin}");
-    let _ = writeln!(d, "pair_style soft/sphere frictionless 1000 0.98 0 0 0\npair_coeff * *");
+    let _ = writeln!(
+        d,
+        "pair_style soft/sphere frictionless 1000 0.98 0 0 0\npair_coeff * *"
+    );
     let _ = writeln!(d, "neighbor 1e-4 bin");
     let _ = writeln!(d, "fix integrate all nve/sphere");
     let _ = writeln!(d, "fix floor all wall/soft/sphere {wall} zplane 0.0 NULL");
@@ -63,8 +76,18 @@ fn main() -> Result<(), Box<dyn Error>> {
         let sphere = incoming_sphere(setup.radius, setup.density, setup.speed, angle);
         // The validation run's step: t_c / 50 of the sphere against the wall.
         let dt = law.contact_duration(sphere.mass) / 50.0;
-        let o = kharaz::impact(Model::ModelAA, setup, angle, 50.0, Integrator::SymplecticEuler);
-        let _ = writeln!(expected, "kharaz_{angle},{:e},{:e}", o.tangential_cor, o.spin);
+        let o = kharaz::impact(
+            Model::ModelAA,
+            setup,
+            angle,
+            50.0,
+            Integrator::SymplecticEuler,
+        );
+        let _ = writeln!(
+            expected,
+            "kharaz_{angle},{:e},{:e}",
+            o.tangential_cor, o.spin
+        );
         let wall = format!(
             "aa {} {} {} {} {}",
             setup.normal_stiffness,
@@ -112,7 +135,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         0.05,
         0.0,
     ];
-    std::fs::write(dir.join("plate.in"), deck(&plugin, &wall, geometry, (dt, steps), true))?;
+    std::fs::write(
+        dir.join("plate.in"),
+        deck(&plugin, &wall, geometry, (dt, steps), true),
+    )?;
     std::fs::write(dir.join("expected.csv"), expected)?;
     eprintln!("wrote the decks and expected.csv into {}", dir.display());
     Ok(())

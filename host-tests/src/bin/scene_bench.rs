@@ -257,7 +257,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         let native = lammps_deck(mass, o.steps);
         std::fs::write(dir.join("in.scene"), &native)?;
         std::fs::write(dir.join("in.plugin"), plugin_deck(&native, mass))?;
-        eprintln!("wrote {}/packing.data, in.scene and in.plugin", dir.display());
+        eprintln!(
+            "wrote {}/packing.data, in.scene and in.plugin",
+            dir.display()
+        );
     }
     let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION)?;
     let wall_normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?;
@@ -362,11 +365,20 @@ fn plugin_deck(native: &str, mass: f64) -> String {
         .lines()
         .map(|line| {
             if line.starts_with("pair_style") {
-                format!("plugin load ${{plugin}}\npair_style soft/sphere {}", law(RESTITUTION))
+                format!(
+                    "plugin load ${{plugin}}\npair_style soft/sphere {}",
+                    law(RESTITUTION)
+                )
             } else if line.starts_with("fix floor") {
-                format!("fix floor all wall/soft/sphere {} zplane 0.0 NULL", law(wall_e))
+                format!(
+                    "fix floor all wall/soft/sphere {} zplane 0.0 NULL",
+                    law(wall_e)
+                )
             } else {
-                line.replace("soft-sphere reference scene.", "soft-sphere reference scene, plugin styles.")
+                line.replace(
+                    "soft-sphere reference scene.",
+                    "soft-sphere reference scene, plugin styles.",
+                )
             }
         })
         .collect::<Vec<_>>()

@@ -151,7 +151,9 @@ stored_spring_model!(
     /// `linear_history`): Model A's sliding force, and after a sliding step the stored displacement
     /// set so that spring plus dashpot equal the sliding force, `xi = -(F_t + eta_t v_t) / k_t`.
     /// It differs from [`ModelAA`]'s plain cap through the dashpot term only, and equals it
-    /// without a tangential dashpot.
+    /// without a tangential dashpot. It creates no kinetic energy, but with a strong tangential
+    /// dashpot the spring it keeps, `-eta_t v_t / k_t` in gross sliding, can store far more
+    /// energy than the cap allows (`host-tests/tests/properties.rs`, the energy search).
     ModelAALuding,
     Slide::AlongTrial,
     Keep::Luding
