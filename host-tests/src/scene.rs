@@ -11,7 +11,7 @@ use crate::random::Xorshift;
 use soft_sphere::{CheckedSphere, Float, Law, Sphere, Vec3};
 use soft_sphere_scene::{
     Domain, Executor, ListEntry, PairResult, Parking, Scene, SceneBuffers, SceneError, Serial,
-    SphereEntry, StepError, StepInput, StepStats, WallEntry, WallSet,
+    SphereEntry, StepError, StepInput, StepStats, WallEntry, WallSet, check_spheres,
 };
 
 /// Stored contacts a sphere can own at a list rebuild (monodisperse packings have at most 12
@@ -87,13 +87,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
         (largest_diameter, skin): (L::Float, L::Float),
         walls: W,
     ) -> Result<Self, SceneError> {
-        let mut spheres = spheres
-            .into_iter()
-            .enumerate()
-            .map(|(index, s)| {
-                CheckedSphere::new(s).map_err(|error| SceneError::Sphere { index, error })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let mut spheres = check_spheres(spheres).collect::<Result<Vec<_>, _>>()?;
         let n = spheres.len();
         let capacity = CANDIDATES_PER_SPHERE * n + 64;
         let sizes = Scene::<L, W, PARKING>::buffer_sizes(

@@ -17,7 +17,7 @@ pub enum SceneError {
     /// (the buffers were not fresh, or come from another scene).
     History,
     /// Sphere `index` is not valid (`error` says why: a non-finite field, a radius or mass that
-    /// is not positive).
+    /// is not positive); what [`check_spheres`](crate::check_spheres) reports.
     Sphere {
         /// Its index.
         index: usize,

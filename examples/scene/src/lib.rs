@@ -130,6 +130,30 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
     law: PhantomData<fn() -> L>,
 }
 
+/// Checks spheres for a scene, in order: each as a [`CheckedSphere`], or
+/// [`SceneError::Sphere`] with its index and what is wrong with it.
+///
+/// ```
+/// use soft_sphere::{ContactError, Sphere, Vec3};
+/// use soft_sphere_scene::{SceneError, check_spheres};
+///
+/// let good = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3), 1.0e-3, 2500.0_f64);
+/// let bad = Sphere { mass: 0.0, ..good };
+/// let mut checked = check_spheres([good, bad]);
+/// assert!(checked.next().unwrap().is_ok());
+/// assert_eq!(
+///     checked.next().unwrap(),
+///     Err(SceneError::Sphere { index: 1, error: ContactError::NonPositiveMass })
+/// );
+/// ```
+pub fn check_spheres<F: Float>(
+    spheres: impl IntoIterator<Item = soft_sphere::Sphere<F>>,
+) -> impl Iterator<Item = Result<CheckedSphere<F>, SceneError>> {
+    spheres.into_iter().enumerate().map(|(index, sphere)| {
+        CheckedSphere::new(sphere).map_err(|error| SceneError::Sphere { index, error })
+    })
+}
+
 /// True when the law keeps a per-contact state: a stateless law's scene reads and writes none.
 const fn stores<S>() -> bool {
     size_of::<S>() > 0
