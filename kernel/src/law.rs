@@ -96,6 +96,7 @@ impl<F: Float> ContactForces<F> {
         -self.force_on_j()
     }
 
+    #[inline(always)]
     fn is_finite(&self) -> bool {
         let (t, s, a, b) = (
             self.tangential_force,
