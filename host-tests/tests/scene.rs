@@ -518,3 +518,25 @@ fn threads_give_the_same_bits_as_one_thread() {
         }
     }
 }
+
+#[test]
+fn the_loads_of_a_touching_pair_are_action_and_reaction() {
+    let law = law();
+    let input = input(
+        &law,
+        (Vec3::ZERO, 2e-6, oblique_pair()[0].mass),
+        Integrator::SymplecticEuler,
+    );
+    let mut pair = checked_pair();
+    let mut b = PairBuffers::new(0);
+    let mut scene =
+        Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 0.0), &mut pair, b.buffers(), NoWalls)
+            .unwrap();
+    while scene.step(&input).unwrap().pair_contacts == 0 {}
+    let ((f0, t0), (f1, t1)) = (scene.load(0).unwrap(), scene.load(1).unwrap());
+    assert!(f0.norm_squared() > 0.0, "the pair pushes");
+    assert_eq!(f0, -f1);
+    // Equal spheres, radius arm: the torques are equal (both -R n x F_t).
+    assert_eq!(t0, t1);
+    assert_eq!(scene.load(2), None);
+}
