@@ -12,7 +12,7 @@ use soft_sphere::{
 };
 use soft_sphere_scene::{
     Domain, Integrator, ListEntry, NoWalls, Parking, Scene, SceneBuffers, SceneError, SphereEntry,
-    StepError, StepInput, StepStats, WallEntry,
+    StepError, StepInput, StepStats, WallEntry, WallSet,
 };
 
 const DIAMETER: f64 = 1e-3;
@@ -333,48 +333,36 @@ fn buffers_that_do_not_fit_the_walls_are_refused() {
         (4, true, false),
         (3, true, true),
     ] {
-        let mut spheres = checked_pair();
-        let mut b = PairBuffers::new(entries);
-        let one = Scene::<Law, _, 4>::new(
-            open_box(),
-            (DIAMETER, 0.0),
-            &mut spheres,
-            b.buffers(),
-            floor,
-        );
+        let refused = |error| error == Some(SceneError::BufferLength);
         assert_eq!(
-            one.err() == Some(SceneError::BufferLength),
+            refused(pair_scene_error(entries, floor)),
             refused_with_one,
             "{entries} entries, one wall"
         );
-        let mut spheres = checked_pair();
-        let mut b = PairBuffers::new(entries);
-        let two = Scene::<Law, _, 4>::new(
-            open_box(),
-            (DIAMETER, 0.0),
-            &mut spheres,
-            b.buffers(),
-            two_walls,
-        );
         assert_eq!(
-            two.err() == Some(SceneError::BufferLength),
+            refused(pair_scene_error(entries, two_walls)),
             refused_with_two,
             "{entries} entries, two walls"
         );
     }
     // Without walls no entry is needed, and none is accepted.
+    assert_eq!(pair_scene_error(0, NoWalls), None);
+    assert_eq!(pair_scene_error(1, NoWalls), Some(SceneError::BufferLength));
+}
+
+/// What building a scene of [`checked_pair`] over fresh buffers with `wall_entries` wall entries
+/// and `walls` gives: `None` when the scene is built.
+fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<SceneError> {
     let mut spheres = checked_pair();
-    let mut b = PairBuffers::new(0);
-    assert!(
-        Scene::<Law, _, 4>::new(
-            open_box(),
-            (DIAMETER, 0.0),
-            &mut spheres,
-            b.buffers(),
-            NoWalls
-        )
-        .is_ok()
-    );
+    let mut b = PairBuffers::new(wall_entries);
+    Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut spheres,
+        b.buffers(),
+        walls,
+    )
+    .err()
 }
 
 #[test]
