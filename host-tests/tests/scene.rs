@@ -365,23 +365,36 @@ fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<Sc
     .err()
 }
 
+/// A scene of [`checked_pair`] over `buffers`, stepped until the pair touches (at most 500 steps).
+fn step_pair_until_touching<'a>(
+    law: &Law,
+    pair: &'a mut [CheckedSphere<f64>],
+    buffers: &'a mut PairBuffers,
+) -> Scene<'a, Law, NoWalls, 4> {
+    let input = input(
+        law,
+        (Vec3::ZERO, 2e-6, pair[0].mass),
+        Integrator::SymplecticEuler,
+    );
+    let mut scene = Scene::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        pair,
+        buffers.buffers(),
+        NoWalls,
+    )
+    .unwrap();
+    let touched = (0..500).any(|_| scene.step(&input).unwrap().pair_contacts > 0);
+    assert!(touched, "the pair met");
+    scene
+}
+
 #[test]
 fn stored_states_of_pairs_outside_the_scene_are_refused() {
     let law = law();
-    let input = input(
-        &law,
-        (Vec3::ZERO, 2e-6, oblique_pair()[0].mass),
-        Integrator::SymplecticEuler,
-    );
     let mut pair = checked_pair();
     let mut b = PairBuffers::new(0);
-    {
-        let mut scene =
-            Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 0.0), &mut pair, b.buffers(), NoWalls)
-                .unwrap();
-        let touched = (0..500).any(|_| scene.step(&input).unwrap().pair_contacts > 0);
-        assert!(touched, "the pair met");
-    }
+    step_pair_until_touching(&law, &mut pair, &mut b);
     // The list now holds the pair's stored spring. The same two spheres take it back...
     let mut again = pair.clone();
     assert!(
@@ -510,17 +523,9 @@ fn threads_give_the_same_bits_as_one_thread() {
 #[test]
 fn the_loads_of_a_touching_pair_are_action_and_reaction() {
     let law = law();
-    let input = input(
-        &law,
-        (Vec3::ZERO, 2e-6, oblique_pair()[0].mass),
-        Integrator::SymplecticEuler,
-    );
     let mut pair = checked_pair();
     let mut b = PairBuffers::new(0);
-    let mut scene =
-        Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 0.0), &mut pair, b.buffers(), NoWalls)
-            .unwrap();
-    while scene.step(&input).unwrap().pair_contacts == 0 {}
+    let scene = step_pair_until_touching(&law, &mut pair, &mut b);
     let ((f0, t0), (f1, t1)) = (scene.load(0).unwrap(), scene.load(1).unwrap());
     assert!(f0.norm_squared() > 0.0, "the pair pushes");
     assert_eq!(f0, -f1);
