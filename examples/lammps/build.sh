@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds LAMMPS from the distribution's own source package (MPI, GRANULAR, PLUGIN, shared
 # libraries) into a cache outside the clone, reused when present, then the soft-sphere plugin
-# against it and the Rust C ABI. Prints, as its last two lines, lmp=PATH and plugin=PATH.
+# against it and the Rust C ABI, in the clone's target directory. Prints, as its last two lines, lmp=PATH and plugin=PATH.
 #
 # Usage: examples/lammps/build.sh   (cache: $SOFT_SPHERE_CACHE, default ~/.cache/soft-sphere)
 set -euo pipefail
@@ -49,7 +49,9 @@ fi
 
 # 3. The Rust static library (the C ABI) and 4. the plugin against both.
 (cd "$root" && cargo build --release -q -p soft-sphere-ffi) >&2
-plugin_build="$cache/plugin-build"
+# The plugin belongs to this clone: its build sits in the clone's target directory, since a cmake
+# cache is tied to the source path it was made from.
+plugin_build="$root/target/lammps-plugin"
 cmake -S "$here" -B "$plugin_build" -D CMAKE_BUILD_TYPE=Release \
   -D LAMMPS_SOURCE_DIR="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/../src")" \
   -D LAMMPS_BINARY_DIR="$lammps_build" -D SOFT_SPHERE_LIB="$root/target/release/libsoft_sphere_ffi.a" \
