@@ -51,7 +51,7 @@ fi
 (cd "$root" && cargo build --release -q -p soft-sphere-ffi) >&2
 # The plugin belongs to this clone: its build sits in the clone's target directory, since a cmake
 # cache is tied to the source path it was made from.
-plugin_build="$root/target/lammps-plugin"
+plugin_build="$root/target/lammps-plugin-build"
 cmake -S "$here" -B "$plugin_build" -D CMAKE_BUILD_TYPE=Release \
   -D LAMMPS_SOURCE_DIR="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/../src")" \
   -D LAMMPS_BINARY_DIR="$lammps_build" -D SOFT_SPHERE_LIB="$root/target/release/libsoft_sphere_ffi.a" \

@@ -10,9 +10,10 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use host_tests::random::Xorshift;
 use host_tests::triple::to_vec3;
 use soft_sphere::{
-    ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring, LinearSpringDashpot,
-    MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere,
-    Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
+    CheckedSphere, ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring,
+    LinearSpringDashpot, MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel,
+    Rotation, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
+    effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -171,5 +172,71 @@ fn skipping(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, laws, skipping);
+/// What an engine's way of calling costs, Model AA f64: the law checking both spheres and deriving
+/// the pair's oscillator at every call, the bound law with the spheres checked at every call (what
+/// a C host's call does), and the bound law on spheres checked once (the scene).
+fn paths(c: &mut Criterion) {
+    let normal = LinearSpringDashpot::new(1000.0f64, 0.9).unwrap();
+    let p = TangentialParameters::new(285.7f64, 0.5, 0.5).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p));
+    let pairs = pairs::<f64>();
+    let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
+    let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
+    let checked: Vec<_> = pairs
+        .iter()
+        .map(|&(i, j)| {
+            (
+                CheckedSphere::new(i).unwrap(),
+                CheckedSphere::new(j).unwrap(),
+            )
+        })
+        .collect();
+    let mut group = c.benchmark_group("contact");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    let mut states = [Default::default(); BATCH];
+    group.bench_function("path/unbound_model_aa_f64", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for ((i, j), state) in pairs.iter().zip(states.iter_mut()) {
+                if let Ok(Interaction::Touching(f)) = law.sphere_sphere(i, j, state, dt) {
+                    sum += f.normal_force;
+                }
+            }
+            black_box(sum)
+        });
+    });
+    group.bench_function("path/bound_checking_spheres_model_aa_f64", |b| {
+        b.iter(|| {
+            let mut bound = law.at(dt);
+            let mut sum = 0.0;
+            for ((i, j), state) in pairs.iter().zip(states.iter_mut()) {
+                let Ok(i) = CheckedSphere::new(*i) else {
+                    continue;
+                };
+                let Ok(j) = CheckedSphere::new(*j) else {
+                    continue;
+                };
+                if let Ok(Interaction::Touching(f)) = bound.sphere_sphere(&i, &j, state) {
+                    sum += f.normal_force;
+                }
+            }
+            black_box(sum)
+        });
+    });
+    group.bench_function("path/bound_model_aa_f64", |b| {
+        b.iter(|| {
+            let mut bound = law.at(dt);
+            let mut sum = 0.0;
+            for ((i, j), state) in checked.iter().zip(states.iter_mut()) {
+                if let Ok(Interaction::Touching(f)) = bound.sphere_sphere(i, j, state) {
+                    sum += f.normal_force;
+                }
+            }
+            black_box(sum)
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, laws, skipping, paths);
 criterion_main!(benches);

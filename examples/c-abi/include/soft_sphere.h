@@ -145,6 +145,22 @@
 #define SS_PARAMETER_MODEL 8
 
 /**
+ * A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
+ * normal oscillator of the last pair of masses and the last wall it checked, so a host that
+ * calls it over a neighbour list derives each once; the results are the same bits as the
+ * `ss_law` entry points'.
+ */
+typedef struct ss_bound_law_f32 ss_bound_law_f32;
+
+/**
+ * A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
+ * normal oscillator of the last pair of masses and the last wall it checked, so a host that
+ * calls it over a neighbour list derives each once; the results are the same bits as the
+ * `ss_law` entry points'.
+ */
+typedef struct ss_bound_law_f64 ss_bound_law_f64;
+
+/**
  * A validated contact law and its checked time step (opaque to C).
  */
 typedef struct ss_law_f32 ss_law_f32;
@@ -494,6 +510,51 @@ int32_t ss_sphere_wall_f64(const ss_law_f64 *law,
                            ss_forces_f64 *out);
 
 /**
+ * Binds `*law` to its time step for one thread's run of calls and writes the new handle
+ * to `*out` (free it with the matching `ss_bound_law_free_*`; the handle keeps its own
+ * copy of the law). Returns `SS_OK` or `SS_ERR_NULL`; `*out` is untouched on error.
+ *
+ * # Safety
+ * `law` and `out` must be valid pointers or null.
+ */
+int32_t ss_bound_law_new_f64(const ss_law_f64 *law, ss_bound_law_f64 **out);
+
+/**
+ * Frees a bound-law handle (null is ignored).
+ *
+ * # Safety
+ * `bound` must come from the matching constructor and not be used afterwards.
+ */
+void ss_bound_law_free_f64(ss_bound_law_f64 *bound);
+
+/**
+ * As `ss_sphere_sphere_*`, the same bits, through a bound law: a pair of masses seen
+ * by the previous call reuses its oscillator. One thread at a time per handle.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_bound_sphere_sphere_f64(ss_bound_law_f64 *bound,
+                                   const ss_sphere_f64 *i,
+                                   const ss_sphere_f64 *j,
+                                   ss_state_f64 *state,
+                                   ss_forces_f64 *out);
+
+/**
+ * As `ss_sphere_wall_*`, the same bits, through a bound law: the wall of the previous
+ * call (the same bits) is not checked again, and a sphere mass seen by the previous
+ * call reuses its oscillator. One thread at a time per handle.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_bound_sphere_wall_f64(ss_bound_law_f64 *bound,
+                                 const ss_sphere_f64 *sphere,
+                                 const ss_wall_f64 *wall,
+                                 ss_state_f64 *state,
+                                 ss_forces_f64 *out);
+
+/**
  * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
  * Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
  *
@@ -576,6 +637,51 @@ int32_t ss_sphere_wall_f32(const ss_law_f32 *law,
                            const ss_wall_f32 *wall,
                            ss_state_f32 *state,
                            ss_forces_f32 *out);
+
+/**
+ * Binds `*law` to its time step for one thread's run of calls and writes the new handle
+ * to `*out` (free it with the matching `ss_bound_law_free_*`; the handle keeps its own
+ * copy of the law). Returns `SS_OK` or `SS_ERR_NULL`; `*out` is untouched on error.
+ *
+ * # Safety
+ * `law` and `out` must be valid pointers or null.
+ */
+int32_t ss_bound_law_new_f32(const ss_law_f32 *law, ss_bound_law_f32 **out);
+
+/**
+ * Frees a bound-law handle (null is ignored).
+ *
+ * # Safety
+ * `bound` must come from the matching constructor and not be used afterwards.
+ */
+void ss_bound_law_free_f32(ss_bound_law_f32 *bound);
+
+/**
+ * As `ss_sphere_sphere_*`, the same bits, through a bound law: a pair of masses seen
+ * by the previous call reuses its oscillator. One thread at a time per handle.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_bound_sphere_sphere_f32(ss_bound_law_f32 *bound,
+                                   const ss_sphere_f32 *i,
+                                   const ss_sphere_f32 *j,
+                                   ss_state_f32 *state,
+                                   ss_forces_f32 *out);
+
+/**
+ * As `ss_sphere_wall_*`, the same bits, through a bound law: the wall of the previous
+ * call (the same bits) is not checked again, and a sphere mass seen by the previous
+ * call reuses its oscillator. One thread at a time per handle.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_bound_sphere_wall_f32(ss_bound_law_f32 *bound,
+                                 const ss_sphere_f32 *sphere,
+                                 const ss_wall_f32 *wall,
+                                 ss_state_f32 *state,
+                                 ss_forces_f32 *out);
 
 /**
  * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic

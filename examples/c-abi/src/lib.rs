@@ -3,8 +3,14 @@
 //! outputs are written only on success, so nothing the caller gave is half-updated.
 //!
 //! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law, Model AA, Model
-//! AA with Luding's reset and frictionless contacts (`SS_MODEL_*`). The per-contact state (`ss_state_*`) is the caller's: zero it for a new contact,
-//! keep it while the contact lasts (the kernel resets it when the pair separates).
+//! AA with Luding's reset and frictionless contacts (`SS_MODEL_*`). The per-contact state
+//! (`ss_state_*`) is the caller's: zero it for a new contact, keep it while the contact lasts (the
+//! kernel resets it when the pair separates).
+//!
+//! Two ways to call a law: `ss_sphere_sphere_*` on the shared, read-only `ss_law_*` handle (any
+//! thread), or `ss_bound_sphere_sphere_*` on an `ss_bound_law_*` made from it, one per thread,
+//! which reuses what the previous call derived (the pair's oscillator, the wall) and so suits an
+//! engine's loop over its neighbour list. Both give the same bits.
 //!
 //! The header `include/soft_sphere.h` is generated from this file by cbindgen; the test
 //! `header_is_current` fails when it is stale (`UPDATE_HEADER=1 cargo test -p soft-sphere-ffi`
@@ -14,9 +20,9 @@
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactError, ContactLaw, Float, Frictionless, Interaction, LinearSpringDashpot, ModelAA,
-    ModelAALuding, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
-    TangentialParameters, TimeStep, Vec3, Wall,
+    BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless,
+    Interaction, LinearSpringDashpot, ModelAA, ModelAALuding, Parameter, ParameterError, Sphere,
+    SpringDisplacement, Stateless, TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -127,6 +133,28 @@ enum AnyLaw<F: Float> {
     ModelAA(ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>),
     ModelAALuding(ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>),
     Frictionless(ContactLaw<F, LinearSpringDashpot<F>, Frictionless>),
+}
+
+/// `$body` with `$law` bound to the law inside an [`AnyLaw`] or an [`AnyBound`], whichever it is
+/// (each arm is compiled for its own law type).
+macro_rules! each_law {
+    ($any:expr, $kind:ident, $law:pat => $body:expr) => {
+        match $any {
+            $kind::Stateless($law) => $body,
+            $kind::ModelAA($law) => $body,
+            $kind::ModelAALuding($law) => $body,
+            $kind::Frictionless($law) => $body,
+        }
+    };
+}
+
+/// Which law a bound handle holds: the law bound to its time step, over a law the handle owns.
+#[derive(Debug)]
+enum AnyBound<F: Float> {
+    Stateless(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>>),
+    ModelAA(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>>),
+    ModelAALuding(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>>),
+    Frictionless(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, Frictionless>>),
 }
 
 /// A vector of three components.
@@ -323,12 +351,7 @@ fn limit_of<F: Float>(p: &ss_params<F>) -> Result<F, i32> {
     };
     let law = build_law(&probe)?;
     let m = p.smallest_effective_mass;
-    Ok(match law.law {
-        AnyLaw::Stateless(l) => l.critical_time_step(m),
-        AnyLaw::ModelAA(l) => l.critical_time_step(m),
-        AnyLaw::ModelAALuding(l) => l.critical_time_step(m),
-        AnyLaw::Frictionless(l) => l.critical_time_step(m),
-    })
+    Ok(each_law!(law.law, AnyLaw, l => l.critical_time_step(m)))
 }
 
 /// # Safety
@@ -357,39 +380,106 @@ unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
     }
 }
 
-fn write_out<F: Float>(
+/// How a law's per-contact state sits in the caller's [`ss_state`].
+trait Stored<F: Float>: ContactState {
+    fn load(state: &ss_state<F>) -> Self;
+    fn store(&self, state: &mut ss_state<F>);
+}
+
+impl<F: Float> Stored<F> for () {
+    #[inline(always)]
+    fn load(_: &ss_state<F>) -> Self {}
+    #[inline(always)]
+    fn store(&self, _: &mut ss_state<F>) {}
+}
+
+impl<F: Float> Stored<F> for SpringDisplacement<F> {
+    #[inline(always)]
+    fn load(state: &ss_state<F>) -> Self {
+        SpringDisplacement {
+            displacement: state.displacement.into(),
+        }
+    }
+    #[inline(always)]
+    fn store(&self, state: &mut ss_state<F>) {
+        state.displacement = self.displacement.into();
+    }
+}
+
+/// Evaluates `$call` on the law's state loaded from `*$state` (bound to `$s`); on success stores
+/// the state back and writes `*$out`, on error leaves both as they were and gives the error's
+/// code. A macro, not a function taking a closure: a closure is not inlined across codegen units,
+/// and the call's result would then pass through memory.
+macro_rules! evaluated {
+    ($state:expr, $out:expr, $s:ident => $call:expr) => {{
+        let mut $s = Stored::load($state);
+        let result = $call;
+        finish(result, &$s, $state, $out)
+    }};
+}
+
+#[inline(always)]
+fn finish<F: Float, S: Stored<F>>(
     result: Result<Interaction<F>, ContactError>,
+    stored: &S,
     state: &mut ss_state<F>,
-    new_state: SpringDisplacement<F>,
     out: &mut ss_forces<F>,
 ) -> i32 {
     match result {
         Ok(interaction) => {
-            state.displacement = new_state.displacement.into();
-            *out = match interaction {
-                Interaction::Apart => ss_forces {
-                    touching: 0,
-                    sliding: 0,
-                    overlap: F::ZERO,
-                    normal_force: F::ZERO,
-                    force_on_j: Vec3::ZERO.into(),
-                    torque_on_i: Vec3::ZERO.into(),
-                    torque_on_j: Vec3::ZERO.into(),
-                },
-                Interaction::Touching(c) => ss_forces {
-                    touching: 1,
-                    sliding: i32::from(c.sliding),
-                    overlap: c.overlap,
-                    normal_force: c.normal_force,
-                    force_on_j: c.force_on_j().into(),
-                    torque_on_i: c.torque_on_i.into(),
-                    torque_on_j: c.torque_on_j.into(),
-                },
-            };
+            stored.store(state);
+            *out = forces_of(interaction);
             SS_OK
         }
         Err(e) => contact_code(e),
     }
+}
+
+#[inline(always)]
+fn forces_of<F: Float>(interaction: Interaction<F>) -> ss_forces<F> {
+    match interaction {
+        Interaction::Apart => ss_forces {
+            touching: 0,
+            sliding: 0,
+            overlap: F::ZERO,
+            normal_force: F::ZERO,
+            force_on_j: Vec3::ZERO.into(),
+            torque_on_i: Vec3::ZERO.into(),
+            torque_on_j: Vec3::ZERO.into(),
+        },
+        Interaction::Touching(c) => ss_forces {
+            touching: 1,
+            sliding: i32::from(c.sliding),
+            overlap: c.overlap,
+            normal_force: c.normal_force,
+            force_on_j: c.force_on_j().into(),
+            torque_on_i: c.torque_on_i.into(),
+            torque_on_j: c.torque_on_j.into(),
+        },
+    }
+}
+
+/// The kernel treats the sphere as body i against a wall: the C ABI reports its force as the one
+/// on j, so that `force_on_j` and `torque_on_j` are always what the sphere receives.
+#[inline(always)]
+fn sphere_as_j<F: Float>(interaction: Interaction<F>) -> Interaction<F> {
+    match interaction {
+        Interaction::Touching(mut c) => {
+            c.normal = -c.normal;
+            c.tangential_force = -c.tangential_force;
+            core::mem::swap(&mut c.torque_on_i, &mut c.torque_on_j);
+            Interaction::Touching(c)
+        }
+        apart => apart,
+    }
+}
+
+/// The kernel's wall for `*wall`, checked.
+#[inline(always)]
+fn plane_of<F: Float>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
+    Wall::new(wall.point.into(), wall.normal.into())
+        .and_then(|plane| plane.with_velocity(wall.velocity.into()))
+        .map_err(|_| SS_ERR_BAD_WALL)
 }
 
 /// # Safety
@@ -414,16 +504,8 @@ unsafe fn pair<F: Float>(
         return SS_ERR_NULL;
     };
     let (i, j): (Sphere<F>, Sphere<F>) = ((*i).into(), (*j).into());
-    let mut spring = SpringDisplacement {
-        displacement: state.displacement.into(),
-    };
-    let result = match &law.law {
-        AnyLaw::Stateless(l) => l.sphere_sphere(&i, &j, &mut (), law.time_step),
-        AnyLaw::ModelAA(l) => l.sphere_sphere(&i, &j, &mut spring, law.time_step),
-        AnyLaw::ModelAALuding(l) => l.sphere_sphere(&i, &j, &mut spring, law.time_step),
-        AnyLaw::Frictionless(l) => l.sphere_sphere(&i, &j, &mut (), law.time_step),
-    };
-    write_out(result, state, spring, out)
+    let dt = law.time_step;
+    each_law!(&law.law, AnyLaw, l => evaluated!(state, out, s => l.sphere_sphere(&i, &j, &mut s, dt)))
 }
 
 /// # Safety
@@ -447,33 +529,146 @@ unsafe fn on_wall<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    let plane = Wall::new(wall.point.into(), wall.normal.into())
-        .and_then(|plane| plane.with_velocity(wall.velocity.into()));
-    let Ok(plane) = plane else {
-        return SS_ERR_BAD_WALL;
+    let plane = match plane_of(wall) {
+        Ok(plane) => plane,
+        Err(code) => return code,
     };
     let sphere: Sphere<F> = (*sphere).into();
-    let mut spring = SpringDisplacement {
-        displacement: state.displacement.into(),
+    let dt = law.time_step;
+    each_law!(&law.law, AnyLaw, l => evaluated!(state, out, s => {
+        l.sphere_wall(&sphere, &plane, &mut s, dt).map(sphere_as_j)
+    }))
+}
+
+/// A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
+/// normal oscillator of the last pair of masses and the last wall it checked, so a host that
+/// calls it over a neighbour list derives each once; the results are the same bits as the
+/// `ss_law` entry points'.
+#[derive(Debug)]
+pub struct ss_bound_law<F: Float> {
+    bound: AnyBound<F>,
+    /// The last wall that passed its checks, as given and as checked.
+    wall: Option<(ss_wall<F>, Wall<F>)>,
+}
+
+/// The same bits, so that a memo keyed on them gives what a fresh check would (-0.0 and 0.0
+/// differ; a NaN never passes the check, so it is never a key).
+fn same_wall<F: Float>(a: &ss_wall<F>, b: &ss_wall<F>) -> bool {
+    let bits = |w: &ss_wall<F>| {
+        [w.point, w.normal, w.velocity].map(|v| [v.x, v.y, v.z].map(|x| x.to_f64().to_bits()))
     };
-    let result = match &law.law {
-        AnyLaw::Stateless(l) => l.sphere_wall(&sphere, &plane, &mut (), law.time_step),
-        AnyLaw::ModelAA(l) => l.sphere_wall(&sphere, &plane, &mut spring, law.time_step),
-        AnyLaw::ModelAALuding(l) => l.sphere_wall(&sphere, &plane, &mut spring, law.time_step),
-        AnyLaw::Frictionless(l) => l.sphere_wall(&sphere, &plane, &mut (), law.time_step),
+    bits(a) == bits(b)
+}
+
+/// # Safety
+/// As the exported bound-law constructors.
+unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law<F>) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(law), false) = (unsafe { law.as_ref() }, out.is_null()) else {
+        return SS_ERR_NULL;
     };
-    // The kernel treats the sphere as body i against a wall: report its force as the one on j,
-    // so that `force_on_j` and `torque_on_j` are always what the sphere receives.
-    let result = result.map(|interaction| match interaction {
-        Interaction::Touching(mut c) => {
-            c.normal = -c.normal;
-            c.tangential_force = -c.tangential_force;
-            core::mem::swap(&mut c.torque_on_i, &mut c.torque_on_j);
-            Interaction::Touching(c)
-        }
-        apart => apart,
+    let dt = law.time_step;
+    // The handle owns a copy of the law; `bound_free` gives it back.
+    let bound = match law.law {
+        AnyLaw::Stateless(l) => AnyBound::Stateless(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::ModelAA(l) => AnyBound::ModelAA(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::ModelAALuding(l) => AnyBound::ModelAALuding(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::Frictionless(l) => AnyBound::Frictionless(Box::leak(Box::new(l)).at(dt)),
+    };
+    let handle = ss_bound_law { bound, wall: None };
+    // SAFETY: out was checked non-null.
+    unsafe { *out = Box::into_raw(Box::new(handle)) };
+    SS_OK
+}
+
+/// # Safety
+/// As the exported bound-law destructors.
+unsafe fn bound_free<F: Float>(bound: *mut ss_bound_law<F>) {
+    if bound.is_null() {
+        return;
+    }
+    // SAFETY: the handle came from Box::into_raw in bound_new.
+    let handle = unsafe { Box::from_raw(bound) };
+    each_law!(handle.bound, AnyBound, b => {
+        let law = core::ptr::from_ref(b.law()).cast_mut();
+        // SAFETY: the law came from Box::leak in bound_new, and the handle, its only borrower,
+        // is consumed here.
+        drop(unsafe { Box::from_raw(law) });
     });
-    write_out(result, state, spring, out)
+}
+
+/// # Safety
+/// As the exported bound sphere-sphere calls.
+unsafe fn bound_pair<F: Float>(
+    bound: *mut ss_bound_law<F>,
+    i: *const ss_sphere<F>,
+    j: *const ss_sphere<F>,
+    state: *mut ss_state<F>,
+    out: *mut ss_forces<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(bound), Some(i), Some(j), Some(state), Some(out)) = (unsafe {
+        (
+            bound.as_mut(),
+            i.as_ref(),
+            j.as_ref(),
+            state.as_mut(),
+            out.as_mut(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    // One sphere at a time: a tuple of two results is copied through memory, a measurable cost
+    // per call.
+    let i = match CheckedSphere::new((*i).into()) {
+        Ok(i) => i,
+        Err(e) => return contact_code(e),
+    };
+    let j = match CheckedSphere::new((*j).into()) {
+        Ok(j) => j,
+        Err(e) => return contact_code(e),
+    };
+    each_law!(&mut bound.bound, AnyBound, b => evaluated!(state, out, s => b.sphere_sphere(&i, &j, &mut s)))
+}
+
+/// # Safety
+/// As the exported bound sphere-wall calls.
+unsafe fn bound_wall<F: Float>(
+    bound: *mut ss_bound_law<F>,
+    sphere: *const ss_sphere<F>,
+    wall: *const ss_wall<F>,
+    state: *mut ss_state<F>,
+    out: *mut ss_forces<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(bound), Some(sphere), Some(wall), Some(state), Some(out)) = (unsafe {
+        (
+            bound.as_mut(),
+            sphere.as_ref(),
+            wall.as_ref(),
+            state.as_mut(),
+            out.as_mut(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let plane = match bound.wall {
+        Some((given, plane)) if same_wall(&given, wall) => plane,
+        _ => match plane_of(wall) {
+            Ok(plane) => {
+                bound.wall = Some((*wall, plane));
+                plane
+            }
+            Err(code) => return code,
+        },
+    };
+    let sphere = match CheckedSphere::new((*sphere).into()) {
+        Ok(sphere) => sphere,
+        Err(e) => return contact_code(e),
+    };
+    each_law!(&mut bound.bound, AnyBound, b => evaluated!(state, out, s => {
+        b.sphere_wall(&sphere, &plane, &mut s).map(sphere_as_j)
+    }))
 }
 
 /// # Safety
@@ -548,7 +743,7 @@ unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -605,6 +800,66 @@ macro_rules! entry_points {
         ) -> i32 {
             // SAFETY: forwarded contract.
             unsafe { on_wall(law, sphere, wall, state, out) }
+        }
+
+        /// Binds `*law` to its time step for one thread's run of calls and writes the new handle
+        /// to `*out` (free it with the matching `ss_bound_law_free_*`; the handle keeps its own
+        /// copy of the law). Returns `SS_OK` or `SS_ERR_NULL`; `*out` is untouched on error.
+        ///
+        /// # Safety
+        /// `law` and `out` must be valid pointers or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $bound_new(
+            law: *const ss_law<$real>,
+            out: *mut *mut ss_bound_law<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { bound_new(law, out) }
+        }
+
+        /// Frees a bound-law handle (null is ignored).
+        ///
+        /// # Safety
+        /// `bound` must come from the matching constructor and not be used afterwards.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $bound_free(bound: *mut ss_bound_law<$real>) {
+            // SAFETY: forwarded contract.
+            unsafe { bound_free(bound) }
+        }
+
+        /// As `ss_sphere_sphere_*`, the same bits, through a bound law: a pair of masses seen
+        /// by the previous call reuses its oscillator. One thread at a time per handle.
+        ///
+        /// # Safety
+        /// All pointers must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $bound_sphere_sphere(
+            bound: *mut ss_bound_law<$real>,
+            i: *const ss_sphere<$real>,
+            j: *const ss_sphere<$real>,
+            state: *mut ss_state<$real>,
+            out: *mut ss_forces<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { bound_pair(bound, i, j, state, out) }
+        }
+
+        /// As `ss_sphere_wall_*`, the same bits, through a bound law: the wall of the previous
+        /// call (the same bits) is not checked again, and a sphere mass seen by the previous
+        /// call reuses its oscillator. One thread at a time per handle.
+        ///
+        /// # Safety
+        /// All pointers must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $bound_sphere_wall(
+            bound: *mut ss_bound_law<$real>,
+            sphere: *const ss_sphere<$real>,
+            wall: *const ss_wall<$real>,
+            state: *mut ss_state<$real>,
+            out: *mut ss_forces<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { bound_wall(bound, sphere, wall, state, out) }
         }
 
         /// Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
@@ -664,5 +919,5 @@ macro_rules! entry_points {
     };
 }
 
-entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
-entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);
+entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
+entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);

@@ -9,6 +9,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -16,7 +17,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), law(nullptr), history(nullptr), advance(true)
+    Fix(lmp, narg, arg), law(nullptr), bound(nullptr), history(nullptr), advance(true)
 {
   const std::string style = "fix wall/soft/sphere";
   if (narg != 12)
@@ -58,6 +59,7 @@ FixWallSoftSphere::~FixWallSoftSphere()
 {
   atom->delete_callback(id, Atom::GROW);
   memory->destroy(history);
+  ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
 }
 
@@ -69,10 +71,13 @@ int FixWallSoftSphere::setmask()
 void FixWallSoftSphere::init()
 {
   // A sphere against a wall has its own mass as effective mass.
+  ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
+  bound = nullptr;
   law = nullptr;
   law = SoftSphere::build(lmp, "fix wall/soft/sphere", params, update->dt,
                           SoftSphere::smallest_mass(lmp));
+  bound = SoftSphere::bind(lmp, "fix wall/soft/sphere", law);
 }
 
 void FixWallSoftSphere::setup(int)
@@ -92,27 +97,38 @@ void FixWallSoftSphere::forces()
 {
   double **x = atom->x, **v = atom->v, **omega = atom->omega;
   double **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    ss_sphere_f64 s;
-    s.position = {x[i][0], x[i][1], x[i][2]};
-    s.velocity = {v[i][0], v[i][1], v[i][2]};
-    s.angular_velocity = {omega[i][0], omega[i][1], omega[i][2]};
-    s.radius = atom->radius[i];
-    s.mass = atom->rmass[i];
-    for (int w = 0; w < WALLS; w++) {
-      if (!present[w]) continue;
-      ss_wall_f64 wall;
-      std::memset(&wall, 0, sizeof(wall));
-      double *point = &wall.point.x, *normal = &wall.normal.x;
-      point[axis] = position[w];
-      normal[axis] = w == 0 ? 1.0 : -1.0;
+  // One wall at a time, so the bound law checks each wall once per step; each atom still
+  // receives LO's force before HI's.
+  for (int w = 0; w < WALLS; w++) {
+    if (!present[w]) continue;
+    const double outward = w == 0 ? 1.0 : -1.0;
+    ss_wall_f64 wall;
+    std::memset(&wall, 0, sizeof(wall));
+    (&wall.point.x)[axis] = position[w];
+    (&wall.normal.x)[axis] = outward;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
       double *spring = &history[i][3 * w];
+      // Apart (the kernel's own test: the distance from the plane is at least the radius):
+      // the kernel would reset the stored spring the same way. A position that is not finite
+      // goes on to the kernel, which refuses it.
+      const double distance = outward * (x[i][axis] - position[w]);
+      if (distance >= radius[i] && std::isfinite(distance)) {
+        if (advance) spring[0] = spring[1] = spring[2] = 0.0;
+        continue;
+      }
+      ss_sphere_f64 s;
+      s.position = {x[i][0], x[i][1], x[i][2]};
+      s.velocity = {v[i][0], v[i][1], v[i][2]};
+      s.angular_velocity = {omega[i][0], omega[i][1], omega[i][2]};
+      s.radius = radius[i];
+      s.mass = atom->rmass[i];
       ss_state_f64 state;
       state.displacement = {spring[0], spring[1], spring[2]};
       ss_forces_f64 out;
-      const int code = ss_sphere_wall_f64(law, &s, &wall, &state, &out);
+      const int code = ss_bound_sphere_wall_f64(bound, &s, &wall, &state, &out);
       if (code != SS_OK)
         error->one(FLERR, "fix wall/soft/sphere: atom {} against the wall: {}", atom->tag[i],
                    SoftSphere::contact_error(code));

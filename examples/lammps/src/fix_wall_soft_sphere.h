@@ -33,6 +33,7 @@ class FixWallSoftSphere : public Fix {
   static constexpr int VALUES = 3 * WALLS;
   ss_params_f64 params;
   ss_law_f64 *law;
+  ss_bound_law_f64 *bound;    // the law bound to the run's step, for this rank's loop
   int axis;              // 0, 1, 2 for xplane, yplane, zplane
   int present[WALLS];    // whether LO and HI exist
   double position[WALLS];

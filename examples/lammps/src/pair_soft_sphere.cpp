@@ -14,13 +14,14 @@
 
 using namespace LAMMPS_NS;
 
-PairSoftSphere::PairSoftSphere(LAMMPS *lmp) : PairGranHookeHistory(lmp), law(nullptr)
+PairSoftSphere::PairSoftSphere(LAMMPS *lmp) : PairGranHookeHistory(lmp), law(nullptr), bound(nullptr)
 {
   single_enable = 0;
 }
 
 PairSoftSphere::~PairSoftSphere()
 {
+  ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
 }
 
@@ -43,9 +44,12 @@ void PairSoftSphere::init_style()
   PairGranHookeHistory::init_style();
   // The lightest pair of atoms has the smallest effective mass, m/2.
   const double pair_mass = 0.5 * SoftSphere::smallest_mass(lmp);
+  ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
+  bound = nullptr;
   law = nullptr;
   law = SoftSphere::build(lmp, "pair_style soft/sphere", params, update->dt, pair_mass);
+  bound = SoftSphere::bind(lmp, "pair_style soft/sphere", law);
 }
 
 static ss_sphere_f64 sphere_of(Atom *atom, int i, const double *position)
@@ -101,7 +105,7 @@ void PairSoftSphere::compute(int eflag, int vflag)
       ss_state_f64 state;
       state.displacement = {shear[0], shear[1], shear[2]};
       ss_forces_f64 out;
-      const int code = ss_sphere_sphere_f64(law, &sphere_i, &sphere_j, &state, &out);
+      const int code = ss_bound_sphere_sphere_f64(bound, &sphere_i, &sphere_j, &state, &out);
       if (code != SS_OK)
         error->one(FLERR, "pair_style soft/sphere: contact of atoms {} and {}: {}",
                    atom->tag[i], atom->tag[j], SoftSphere::contact_error(code));

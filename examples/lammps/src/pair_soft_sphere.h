@@ -25,6 +25,7 @@ class PairSoftSphere : public PairGranHookeHistory {
  private:
   ss_params_f64 params;
   ss_law_f64 *law;
+  ss_bound_law_f64 *bound;    // the law bound to the run's step, for this rank's loop
 };
 
 }    // namespace LAMMPS_NS

@@ -98,6 +98,14 @@ ss_law_f64 *SoftSphere::build(LAMMPS *lmp, const std::string &style, ss_params_f
   return nullptr;
 }
 
+ss_bound_law_f64 *SoftSphere::bind(LAMMPS *lmp, const std::string &style, const ss_law_f64 *law)
+{
+  ss_bound_law_f64 *bound = nullptr;
+  if (ss_bound_law_new_f64(law, &bound) != SS_OK)
+    lmp->error->all(FLERR, "{}: the kernel could not bind its law to the time step", style);
+  return bound;
+}
+
 double SoftSphere::smallest_mass(LAMMPS *lmp)
 {
   double smallest = 1e300;

@@ -26,6 +26,11 @@ namespace SoftSphere {
   ss_law_f64 *build(LAMMPS *lmp, const std::string &style, ss_params_f64 params, double dt,
                     double smallest_effective_mass);
 
+  /* `law` bound to its time step for this rank's loop over its contacts (the kernel reuses
+   * each pair's derived oscillator and the wall's check between calls). Free it with
+   * ss_bound_law_free_f64 before the law. */
+  ss_bound_law_f64 *bind(LAMMPS *lmp, const std::string &style, const ss_law_f64 *law);
+
   /* The smallest per-atom mass over all ranks (atom style sphere). */
   double smallest_mass(LAMMPS *lmp);
 
