@@ -1,6 +1,8 @@
 //! Per-contact cost: one contact evaluation (hot cache, a batch of 1024 independent touching
 //! pairs) for every tangential law x f32/f64 x math backend, and the slots a scene can switch
-//! off (friction, rotation, damping). Also prints the per-contact state size.
+//! off (friction, rotation, damping), and what an engine's way of calling costs (the law, the
+//! bound law checking its spheres, the bound law on checked spheres). Also prints the per-contact
+//! state size.
 //!
 //! Run: `cargo bench -p host-tests --bench contact` (add `-- --quick` for a fast pass).
 

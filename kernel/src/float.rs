@@ -117,14 +117,12 @@ impl_float!(f32, 1u32 << 31);
 impl_float!(f64, 1u64 << 63);
 
 /// True when every value is finite. `x * 0` is `0` for finite `x` and NaN otherwise, so one sum
-/// answers for all of them without overflow and without a branch per value. The sum runs in four
-/// independent partial sums: one chain of N dependent additions would cost N addition latencies
-/// per check (the answer is the same in any order).
+/// answers for all of them without overflow and without a branch per value.
 #[inline(always)]
 pub(crate) fn all_finite<F: Float, const N: usize>(values: [F; N]) -> bool {
-    let mut partial = [F::ZERO; 4];
-    for (k, value) in values.into_iter().enumerate() {
-        partial[k % 4] += value * F::ZERO;
+    let mut probe = F::ZERO;
+    for value in values {
+        probe += value * F::ZERO;
     }
-    (partial[0] + partial[1]) + (partial[2] + partial[3]) == F::ZERO
+    probe == F::ZERO
 }
