@@ -482,7 +482,7 @@ fn threads_give_the_same_bits_as_one_thread() {
     let gravity = Vec3::new(0.0, 0.0, -9.81);
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let run = |threads: Option<usize>| {
-            let (spheres, domain) = gas(2000, 5);
+            let (spheres, domain) = gas(1000, 5);
             let mut scene =
                 OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
             let m = scene.spheres[0].mass;
@@ -492,10 +492,10 @@ fn threads_give_the_same_bits_as_one_thread() {
                 contacts.push((s.pair_contacts, s.wall_contacts, s.overlap_sum.to_bits()));
             };
             match threads {
-                None => scene.run(&input, 3000, record).unwrap(),
+                None => scene.run(&input, 1000, record).unwrap(),
                 Some(n) => {
                     let pool = Threads::new(n).unwrap();
-                    scene.run_on(&input, 3000, &pool, record).unwrap();
+                    scene.run_on(&input, 1000, &pool, record).unwrap();
                 }
             }
             (scene.spheres, contacts)
