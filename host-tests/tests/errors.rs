@@ -165,6 +165,15 @@ fn time_steps_are_checked_against_the_analytic_stability_limit() {
         }
         other => panic!("expected TimeStepUnstable, got {other:?}"),
     }
+    // The documented boundary, to the last bit: a step at the limit is refused, the largest
+    // float below it is accepted as given.
+    let exact = law.critical_time_step(mass);
+    assert!(matches!(
+        law.time_step(exact, mass),
+        Err(TimeStepUnstable { .. })
+    ));
+    let below = exact.next_down();
+    assert_eq!(law.time_step(below, mass).unwrap().seconds(), below);
     // Without friction only the normal mode limits the step.
     let frictionless = ContactLaw::new(*law.normal(), Frictionless);
     assert!((frictionless.critical_time_step(mass) / normal_limit - 1.0).abs() < 1e-12);

@@ -533,3 +533,148 @@ fn the_loads_of_a_touching_pair_are_action_and_reaction() {
     assert_eq!(t0, t1);
     assert_eq!(scene.load(2), None);
 }
+
+/// The oblique pair and a third sphere beside sphere `near` on the `side` (+1 or -1) in y,
+/// keeping pace with it in x and closing in y, so that it comes within reach while the pair
+/// touches.
+fn trio((near, side): (usize, f64)) -> Vec<CheckedSphere<f64>> {
+    let mut spheres = oblique_pair();
+    let mut third = spheres[near];
+    third.position.y += side * (DIAMETER + 4e-6);
+    third.velocity = Vec3::new(third.velocity.x, -side * 0.1, 0.0);
+    third.angular_velocity = Vec3::ZERO;
+    spheres.push(third);
+    spheres
+        .into_iter()
+        .map(|s| CheckedSphere::new(s).unwrap())
+        .collect()
+}
+
+/// Every sphere's position, velocity and spin, as bits.
+fn motion_bits(spheres: &[CheckedSphere<f64>]) -> Vec<[[u64; 3]; 3]> {
+    let bits = |v: Vec3<f64>| v.to_array().map(f64::to_bits);
+    spheres
+        .iter()
+        .map(|s| [bits(s.position), bits(s.velocity), bits(s.angular_velocity)])
+        .collect()
+}
+
+/// Buffers in vectors, for `spheres` spheres in [`open_box`] without skin and a list of
+/// `capacity` entries, parking `K` stored contacts per sphere.
+struct VecBuffers<const K: usize> {
+    entries: Vec<SphereEntry<f64>>,
+    cells: Vec<u32>,
+    list: Vec<ListEntry<SpringDisplacement<f64>>>,
+    parking: Vec<Parking<SpringDisplacement<f64>, K>>,
+}
+
+impl<const K: usize> VecBuffers<K> {
+    fn new(spheres: usize, capacity: usize) -> Self {
+        let sizes = Scene::<Law, NoWalls, K>::buffer_sizes(
+            &open_box(),
+            (DIAMETER, 0.0),
+            spheres,
+            capacity,
+            false,
+        )
+        .unwrap();
+        Self {
+            entries: vec![SphereEntry::default(); sizes.spheres],
+            cells: vec![0; sizes.cells],
+            list: vec![ListEntry::default(); sizes.list],
+            parking: vec![Parking::default(); sizes.parking],
+        }
+    }
+
+    /// A scene over these buffers, run for at most `steps` steps; how many succeeded, whether
+    /// the pair touched in the last, and the error that stopped it.
+    fn run(
+        &mut self,
+        input: &StepInput<'_, Law>,
+        spheres: &mut [CheckedSphere<f64>],
+        steps: usize,
+    ) -> (usize, bool, Option<StepError>) {
+        let buffers = SceneBuffers {
+            spheres: &mut self.entries,
+            cells: &mut self.cells,
+            list: &mut self.list,
+            parking: &mut self.parking,
+            walls: &mut [],
+            pair_results: &mut [],
+        };
+        let mut scene = Scene::new(open_box(), (DIAMETER, 0.0), spheres, buffers, NoWalls).unwrap();
+        let mut touching = false;
+        for done in 0..steps {
+            match scene.step(input) {
+                Ok(stats) => touching = stats.pair_contacts > 0,
+                Err(error) => return (done, touching, Some(error)),
+            }
+        }
+        (steps, touching, None)
+    }
+}
+
+#[test]
+fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
+    let law = law();
+    let mass = oblique_pair()[0].mass;
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    let after = 60;
+    // On either side of either sphere: the grid finds the new pair before or after the old.
+    for near in [(0, 1.0), (0, -1.0), (1, 1.0), (1, -1.0)] {
+        // A list of one: it holds the pair until the third sphere comes within reach.
+        let mut spheres = trio(near);
+        let mut small = VecBuffers::<4>::new(3, 1);
+        let (steps, touching, error) = small.run(&input, &mut spheres, 500);
+        assert_eq!(
+            error,
+            Some(StepError::ListFull),
+            "third sphere beside {near:?}"
+        );
+        assert!(
+            touching,
+            "the pair touched (its spring is stored) when the list overflowed"
+        );
+        // The documented recovery: a larger list over the same history.
+        let mut large = VecBuffers::<4>::new(3, 4);
+        large.list[..1].copy_from_slice(&small.list);
+        let (done, _, error) = large.run(&input, &mut spheres, after);
+        assert_eq!((done, error), (after, None));
+
+        // A large list from the start, with a new scene at the same step.
+        let mut reference = trio(near);
+        let mut b = VecBuffers::<4>::new(3, 4);
+        assert_eq!(b.run(&input, &mut reference, steps), (steps, true, None));
+        assert_eq!(b.run(&input, &mut reference, after).0, after);
+        assert_eq!(
+            motion_bits(&spheres),
+            motion_bits(&reference),
+            "third sphere beside {near:?}"
+        );
+    }
+}
+
+#[test]
+fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
+    let law = law();
+    let mass = oblique_pair()[0].mass;
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    // Sphere 0 owns both its contacts (the lower index owns a pair): with room to park one,
+    // the first rebuild with both springs stored fails.
+    let mut spheres = trio((0, 1.0));
+    let mut narrow = VecBuffers::<1>::new(3, 4);
+    let (steps, touching, error) = narrow.run(&input, &mut spheres, 500);
+    assert_eq!(error, Some(StepError::ParkingFull));
+    assert!(touching);
+    // The same list with room to park four.
+    let mut wide = VecBuffers::<4>::new(3, 4);
+    wide.list.copy_from_slice(&narrow.list);
+    let after = 60;
+    assert_eq!(wide.run(&input, &mut spheres, after).0, after);
+
+    let mut reference = trio((0, 1.0));
+    let mut b = VecBuffers::<4>::new(3, 4);
+    assert_eq!(b.run(&input, &mut reference, steps).0, steps);
+    assert_eq!(b.run(&input, &mut reference, after).0, after);
+    assert_eq!(motion_bits(&spheres), motion_bits(&reference));
+}

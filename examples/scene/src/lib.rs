@@ -44,7 +44,7 @@ use core::marker::PhantomData;
 
 use soft_sphere::{CheckedSphere, Float, Law, TimeStep, Vec3};
 
-use grid::Grid;
+use grid::{Candidate, Grid};
 
 /// Where the history update sits in a step: see the kernel's `motion` module.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -118,9 +118,6 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
     grid: Grid<L::Float>,
     skin: L::Float,
     list_current: bool,
-    /// The history has been moved from the list into the parking by a list rebuild that has not
-    /// finished (it failed): the next rebuild takes it from there.
-    history_parked: bool,
     list_builds: usize,
     forces_current: bool,
     /// A step's integration diverged: every later step refuses to run.
@@ -255,7 +252,6 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             grid,
             skin,
             list_current: false,
-            history_parked: false,
             list_builds: 0,
             forces_current: false,
             halted: false,
@@ -292,10 +288,11 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
 
     /// Rebuilds the Verlet list from the cell grid and carries each touching pair's state over
     /// to its new place in the list (through the parking, so a sphere can own at most `K`).
+    /// A failed build leaves the history in the list, as a list of the stored pairs.
     fn rebuild_list(&mut self) -> Result<(), StepError> {
         let live = self.live;
         let relaxed = L::State::default();
-        if stores::<L::State>() && !self.history_parked {
+        if stores::<L::State>() {
             for parking in self.parking.iter_mut() {
                 parking.clear();
             }
@@ -309,21 +306,21 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
                         .map_err(|()| StepError::ParkingFull)?;
                 }
             }
-            self.history_parked = true;
         }
         let old_count = self.candidate_count;
         self.grid
             .sort(self.spheres, self.cell_start, self.cell_entries);
-        // A failed build leaves the history parked and the old length, for the next attempt.
-        let count = self
-            .grid
-            .pairs(
-                self.spheres,
-                (self.cell_start, self.cell_entries),
-                self.skin,
-                self.list,
-            )
-            .map_err(|()| StepError::ListFull)?;
+        let Ok(count) = self.grid.pairs(
+            self.spheres,
+            (self.cell_start, self.cell_entries),
+            self.skin,
+            self.list,
+        ) else {
+            // The list's pairs were overwritten up to its end: write the parked history back,
+            // for the next attempt or for a scene over a larger list.
+            self.unpark(old_count);
+            return Err(StepError::ListFull);
+        };
         self.candidate_count = count;
         if stores::<L::State>() {
             // Keep every state past the list relaxed (see `SceneBuffers`).
@@ -334,7 +331,6 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
                 let c = entry.candidate;
                 entry.states[live] = self.parking[c.i as usize].find(c.j);
             }
-            self.history_parked = false;
         }
         for (entry, sphere) in self.entries.iter_mut().zip(self.spheres.iter()) {
             entry.anchor = sphere.position;
@@ -342,5 +338,33 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         self.list_current = true;
         self.list_builds += 1;
         Ok(())
+    }
+
+    /// Writes the parked states back as the list's first entries (each pair with no image
+    /// shift: the list is not current, so only its pairs and states are read) and relaxes the
+    /// rest up to `old_count`. They fit: they were parked from the first `old_count` entries.
+    fn unpark(&mut self, old_count: usize) {
+        if !stores::<L::State>() {
+            return;
+        }
+        let relaxed = L::State::default();
+        let mut count = 0;
+        for (i, parking) in self.parking.iter().enumerate() {
+            for (j, state) in parking.parked() {
+                self.list[count] = ListEntry {
+                    candidate: Candidate {
+                        i: i as u32,
+                        j,
+                        image: [0, 0],
+                    },
+                    states: [state; 2],
+                };
+                count += 1;
+            }
+        }
+        for entry in self.list[count..old_count.max(count)].iter_mut() {
+            entry.states = [relaxed; 2];
+        }
+        self.candidate_count = count;
     }
 }

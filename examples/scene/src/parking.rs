@@ -39,6 +39,14 @@ impl<S: Copy + Default, const K: usize> Parking<S, K> {
         S::default()
     }
 
+    /// Every parked contact: partner index and state.
+    pub(crate) fn parked(&self) -> impl Iterator<Item = (u32, S)> + '_ {
+        self.partner[..self.len]
+            .iter()
+            .copied()
+            .zip(self.state[..self.len].iter().copied())
+    }
+
     /// Parks a contact; `Err` when all `K` places are taken.
     #[inline(always)]
     pub(crate) fn push(&mut self, partner: u32, state: S) -> Result<(), ()> {

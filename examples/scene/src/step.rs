@@ -189,8 +189,10 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     ///   for walls. With symplectic Euler the scene is then exactly as before the call; with
     ///   velocity Verlet the spheres have had the step's first half kick and drift, and the
     ///   contact history is as before.
-    /// - [`StepError::ListFull`], [`StepError::ParkingFull`] at a list rebuild (nothing is lost:
-    ///   enlarge the buffers and build the scene again over the same history).
+    /// - [`StepError::ListFull`], [`StepError::ParkingFull`] at a list rebuild. Nothing is lost:
+    ///   the list buffer still holds every stored state, so copying it to the front of a longer
+    ///   list (or keeping it with a larger parking) and building a scene again carries on from
+    ///   the same history.
     /// - [`StepError::Diverged`] when finite forces moved a sphere to a non-finite position or
     ///   velocity; that sphere keeps its previous state, and every later step returns
     ///   [`StepError::Halted`].
