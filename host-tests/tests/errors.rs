@@ -2,8 +2,9 @@
 //! rejected evaluation leaves the caller's per-contact state exactly as it was.
 
 use soft_sphere::{
-    ContactError, ContactLaw, Frictionless, Interaction, LinearSpringDashpot, ModelAA, Parameter,
-    ParameterError, Sphere, SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
+    CheckedSphere, ContactError, ContactLaw, Frictionless, Interaction, LinearSpringDashpot,
+    ModelAA, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
+    TangentialParameters, Vec3, Wall,
 };
 
 fn law() -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
@@ -227,7 +228,27 @@ fn bad_sphere_inputs_get_their_error_and_change_nothing() {
         rejects(expected, |state| {
             law.sphere_wall(&on_floor, &floor, state, dt)
         });
+        // Checking once refuses it the same way.
+        assert_eq!(CheckedSphere::new(i), Err(expected));
+        assert_eq!(CheckedSphere::try_from(i), Err(expected));
     }
+    // A valid sphere passes, reads as itself and gives itself back; an image moved past the
+    // largest float is refused.
+    let (i, _) = touching_pair();
+    let checked = CheckedSphere::new(i).unwrap();
+    assert_eq!((*checked, checked.into_inner()), (i, i));
+    let far = Vec3::new(f64::MAX, 0.0, 0.0);
+    assert_eq!(
+        checked.translated(far).map(CheckedSphere::into_inner),
+        Ok(Sphere {
+            position: i.position + far,
+            ..i
+        })
+    );
+    assert_eq!(
+        checked.translated(far * 2.0),
+        Err(ContactError::NonFiniteInput)
+    );
 }
 
 #[test]
@@ -308,4 +329,79 @@ fn separating_resets_the_state_and_touching_advances_it() {
         Ok(Interaction::Apart)
     );
     assert_eq!(state, SpringDisplacement::default());
+}
+
+/// Every error says what went wrong in words a user can act on: each message is distinct and
+/// names the parameter, index or values it carries.
+#[test]
+fn every_error_message_names_what_went_wrong() {
+    use soft_sphere_scene::{SceneError, StepError};
+    let messages: Vec<(String, &[&str])> = vec![
+        (
+            ParameterError::NonFinite(Parameter::Mass).to_string(),
+            &["Mass", "finite"],
+        ),
+        (
+            ParameterError::NotPositive(Parameter::Radius).to_string(),
+            &["Radius", "positive"],
+        ),
+        (
+            ParameterError::Negative(Parameter::Friction).to_string(),
+            &["Friction", "negative"],
+        ),
+        (
+            ParameterError::RestitutionOutOfRange.to_string(),
+            &["restitution", "[0, 1]"],
+        ),
+        (
+            ParameterError::ReboundUnreachable {
+                rebound: 0.05,
+                lowest: 0.135,
+            }
+            .to_string(),
+            &["0.05", "0.135"],
+        ),
+        (
+            ParameterError::TimeStepUnstable {
+                time_step: 2e-6,
+                limit: 1.5e-6,
+            }
+            .to_string(),
+            &["2e-6", "1.5e-6"],
+        ),
+        (ContactError::NonFiniteInput.to_string(), &["NaN"]),
+        (ContactError::NonPositiveRadius.to_string(), &["radius"]),
+        (ContactError::NonPositiveMass.to_string(), &["mass"]),
+        (ContactError::CoincidentCentres.to_string(), &["centres"]),
+        (ContactError::NonFiniteResult.to_string(), &["overflow"]),
+        (ContactError::HistoryFull.to_string(), &["full"]),
+        (SceneError::BufferLength.to_string(), &["buffer"]),
+        (SceneError::Domain.to_string(), &["domain"]),
+        (SceneError::History.to_string(), &["stored"]),
+        (
+            SceneError::Sphere {
+                index: 7,
+                error: ContactError::NonPositiveMass,
+            }
+            .to_string(),
+            &["sphere 7", "mass"],
+        ),
+        (
+            StepError::Contact(ContactError::CoincidentCentres).to_string(),
+            &["centres"],
+        ),
+        (StepError::ListFull.to_string(), &["list"]),
+        (StepError::ParkingFull.to_string(), &["parking"]),
+        (StepError::Diverged { index: 3 }.to_string(), &["sphere 3"]),
+        (StepError::Halted.to_string(), &["stopped"]),
+    ];
+    for (k, (message, words)) in messages.iter().enumerate() {
+        for word in *words {
+            assert!(message.contains(word), "{message:?} should name {word:?}");
+        }
+        assert!(
+            messages[..k].iter().all(|(other, _)| other != message),
+            "{message:?} is not distinct"
+        );
+    }
 }
