@@ -405,3 +405,53 @@ fn every_error_message_names_what_went_wrong() {
         );
     }
 }
+
+/// The documented boundaries of contact, to the last bit: spheres touch while their distance is
+/// below the sum of the radii (a sphere and a wall while its distance is below the radius), and
+/// centres count as coincident while their squared distance is below the smallest normal float.
+#[test]
+fn contact_and_coincidence_begin_exactly_where_documented() {
+    let law = law();
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let touches = |i: &Sphere<f64>, j: &Sphere<f64>| {
+        matches!(
+            law.sphere_sphere(i, j, &mut SpringDisplacement::default(), dt),
+            Ok(Interaction::Touching(_))
+        )
+    };
+    let (i, mut j) = touching_pair();
+    let reach = i.radius + j.radius;
+    j.position = Vec3::new(reach, 0.0, 0.0);
+    assert!(!touches(&i, &j), "at the sum of the radii: apart");
+    j.position.x = reach.next_down();
+    assert!(touches(&i, &j), "just inside: touching");
+
+    // Squared distance exactly the smallest normal: (2^-511)^2 = 2^-1022.
+    let root = f64::MIN_POSITIVE.sqrt();
+    assert_eq!(root * root, f64::MIN_POSITIVE);
+    j.position = Vec3::new(root, 0.0, 0.0);
+    assert!(
+        touches(&i, &j),
+        "at the smallest normal squared distance: a contact"
+    );
+    j.position.x = root.next_down();
+    assert_eq!(
+        law.sphere_sphere(&i, &j, &mut SpringDisplacement::default(), dt),
+        Err(ContactError::CoincidentCentres)
+    );
+
+    let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let mut on_floor = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3), 1.0e-3, 2500.0);
+    let wall_touches = |s: &Sphere<f64>| {
+        matches!(
+            law.sphere_wall(s, &floor, &mut SpringDisplacement::default(), dt),
+            Ok(Interaction::Touching(_))
+        )
+    };
+    assert!(
+        !wall_touches(&on_floor),
+        "at one radius from the wall: apart"
+    );
+    on_floor.position.z = on_floor.radius.next_down();
+    assert!(wall_touches(&on_floor), "just inside: touching");
+}
