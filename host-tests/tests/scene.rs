@@ -8,7 +8,7 @@ use host_tests::scene::{Column, OwnedScene, Threads};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     CheckedSphere, ContactError, ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere,
-    SpringDisplacement, TangentialParameters, Vec3, Wall,
+    SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{
     Domain, Integrator, ListEntry, NoWalls, Parking, Scene, SceneBuffers, SceneError, SphereEntry,
@@ -677,4 +677,143 @@ fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
     assert_eq!(b.run(&input, &mut reference, steps).0, steps);
     assert_eq!(b.run(&input, &mut reference, after).0, after);
     assert_eq!(motion_bits(&spheres), motion_bits(&reference));
+}
+
+#[test]
+fn each_steps_totals_are_what_a_brute_force_search_finds() {
+    // The stateless law stores nothing, so the kernel's verdict on each pair (sliding or not)
+    // can be had again outside the scene from the positions before the step.
+    type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
+    let law: Plain = ContactLaw::new(
+        LinearSpringDashpot::new(1000.0, 0.9).unwrap(),
+        Stateless(TangentialParameters::new(285.7, 0.5, 0.3).unwrap()),
+    );
+    let (spheres, domain) = gas(300, 3);
+    // A floor through the lowest layer, so that some spheres touch it from the start.
+    let lowest = spheres
+        .iter()
+        .map(|s| s.position.z)
+        .fold(f64::INFINITY, f64::min);
+    let height = lowest - 0.45 * DIAMETER;
+    let floor = Wall::new(Vec3::new(0.0, 0.0, height), Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let mut scene =
+        OwnedScene::<Plain, _>::new(spheres, domain, (DIAMETER, 1e-4), [floor]).unwrap();
+    let m = scene.spheres[0].mass;
+    let input = StepInput {
+        law: &law,
+        wall_law: &law,
+        gravity: Vec3::new(0.0, 0.0, -9.81),
+        time_step: law.time_step(4e-6, m / 2.0).unwrap(),
+        integrator: Integrator::SymplecticEuler,
+    };
+    let (lx, ly) = (domain.upper.x, domain.upper.y);
+    let (mut pairs_seen, mut sliding_seen, mut walls_seen) = (0, 0, 0);
+    for _ in 0..200 {
+        let before = scene.spheres.clone();
+        let mut stats = StepStats::default();
+        scene.run(&input, 1, |_, s| stats = *s).unwrap();
+        let mut expected = StepStats::<f64>::default();
+        let mut exact_overlaps = 0.0;
+        for a in 0..before.len() {
+            for b in a + 1..before.len() {
+                let mut d = before[b].position - before[a].position;
+                let shift = Vec3::new(-lx * (d.x / lx).round(), -ly * (d.y / ly).round(), 0.0);
+                d += shift;
+                let reach = before[a].radius + before[b].radius;
+                if d.norm_squared() >= reach * reach {
+                    continue;
+                }
+                let image = before[b].translated(shift).unwrap();
+                let contact = law.sphere_sphere(&before[a], &image, &mut (), input.time_step);
+                let Ok(Interaction::Touching(c)) = contact else {
+                    panic!("pair ({a}, {b}) overlaps: {contact:?}");
+                };
+                expected.pair_contacts += 1;
+                expected.sliding_contacts += usize::from(c.sliding);
+                exact_overlaps += reach - d.norm_squared().sqrt();
+            }
+        }
+        expected.wall_contacts = before
+            .iter()
+            .filter(|s| s.position.z - height < s.radius)
+            .count();
+        assert_eq!(
+            (
+                stats.pair_contacts,
+                stats.sliding_contacts,
+                stats.wall_contacts
+            ),
+            (
+                expected.pair_contacts,
+                expected.sliding_contacts,
+                expected.wall_contacts
+            )
+        );
+        assert!(
+            (stats.overlap_sum - exact_overlaps).abs() <= 1e-9 * exact_overlaps,
+            "overlap sum {} against {exact_overlaps}",
+            stats.overlap_sum
+        );
+        pairs_seen += stats.pair_contacts;
+        sliding_seen += stats.sliding_contacts;
+        walls_seen += stats.wall_contacts;
+    }
+    // The run had all three kinds, and sticking pairs too.
+    assert!(
+        walls_seen > 0 && sliding_seen > 0 && pairs_seen > sliding_seen,
+        "{walls_seen} wall, {sliding_seen} sliding, {pairs_seen} pair contacts"
+    );
+}
+
+#[test]
+fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box() {
+    let law = law();
+    let skin = 1e-4;
+    // One sphere drifting in x at 1.1e-6 m a step, one at rest far from it: after 46 steps
+    // it has moved 5.06e-5 m, past half the skin (5e-5 m), after 45 only 4.95e-5 m.
+    let spheres = |x: f64| {
+        let mut moving = Sphere::solid(Vec3::new(x, 1e-3, 1e-3), DIAMETER / 2.0, 2500.0);
+        moving.velocity = Vec3::new(0.55, 0.0, 0.0);
+        let resting = Sphere::solid(Vec3::new(3e-3, 4e-3, 4e-3), DIAMETER / 2.0, 2500.0);
+        vec![moving, resting]
+    };
+    let builds = |x: f64, skin: f64, steps: usize, integrator| {
+        let mass = spheres(x)[0].mass;
+        let input = input(&law, (Vec3::ZERO, 2e-6, mass), integrator);
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres(x), open_box(), (DIAMETER, skin), NoWalls).unwrap();
+        scene.run(&input, steps, |_, _| {}).unwrap();
+        scene.list_builds
+    };
+    // Symplectic Euler evaluates before it moves, so the 47th step's evaluation sees the 46th
+    // step's motion; velocity Verlet moves first, so its 46th step does.
+    // Without a skin, any motion is too much: a build at every evaluation after a move (velocity
+    // Verlet's first evaluation comes before any).
+    for (integrator, last_quiet, every_step) in [
+        (Integrator::SymplecticEuler, 46, 10),
+        (Integrator::VelocityVerlet, 45, 11),
+    ] {
+        assert_eq!(
+            builds(1e-3, skin, last_quiet, integrator),
+            1,
+            "{integrator:?}"
+        );
+        assert_eq!(
+            builds(1e-3, skin, last_quiet + 1, integrator),
+            2,
+            "{integrator:?}"
+        );
+        assert_eq!(
+            builds(1e-3, 0.0, 10, integrator),
+            every_step,
+            "{integrator:?}"
+        );
+        // Crossing the periodic boundary in x at the 10th step stales the list at once.
+        let near_edge = open_box().upper.x - 9.5 * 1.1e-6;
+        assert_eq!(
+            builds(near_edge, skin, last_quiet, integrator),
+            2,
+            "{integrator:?}"
+        );
+    }
 }
