@@ -817,3 +817,95 @@ fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box(
         );
     }
 }
+
+#[test]
+fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
+    type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
+    // Cells at least 1.1 mm on a side in a 6 mm box: 5 x 5 x 5.
+    let reach = (DIAMETER, 1e-4);
+    let stored = Scene::<Law, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, true);
+    assert_eq!(
+        stored,
+        Ok(soft_sphere_scene::BufferSizes {
+            spheres: 7,
+            cells: 125 + 1 + 7,
+            list: 40,
+            parking: 7,
+            walls: 14,
+            pair_results: 40,
+        })
+    );
+    // A law that stores nothing needs no parking and no wall states; a serial scene no results.
+    let plain = Scene::<Plain, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, false);
+    let plain = plain.unwrap();
+    assert_eq!((plain.parking, plain.walls, plain.pair_results), (0, 0, 0));
+
+    // A periodic direction needs 3 cells (the half shell would visit a pair twice); a closed
+    // one does with fewer.
+    let mut narrow = open_box();
+    narrow.upper.x = 3.0e-3; // 2 cells of 1.5 mm
+    let sizes = |domain: &Domain<f64>| {
+        Scene::<Law, NoWalls, 4>::buffer_sizes(domain, reach, 2, 4, false).map(|s| s.cells)
+    };
+    assert_eq!(sizes(&narrow), Err(SceneError::Domain));
+    narrow.periodic_x = false;
+    assert_eq!(sizes(&narrow), Ok(2 * 5 * 5 + 1 + 2));
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let mut domain = open_box();
+        domain.upper.z = bad;
+        assert_eq!(sizes(&domain), Err(SceneError::Domain), "height {bad}");
+    }
+    // A negative or non-finite skin.
+    for skin in [-1e-4, f64::NAN, f64::INFINITY] {
+        let mut spheres = checked_pair();
+        let mut b = PairBuffers::new(0);
+        let scene = Scene::<Law, _, 4>::new(
+            open_box(),
+            (DIAMETER, skin),
+            &mut spheres,
+            b.buffers(),
+            NoWalls,
+        );
+        assert_eq!(scene.err(), Some(SceneError::Domain), "skin {skin}");
+    }
+}
+
+#[test]
+fn integrators_have_distinct_file_name_safe_names() {
+    let names = Integrator::ALL.map(Integrator::name);
+    assert_ne!(names[0], names[1]);
+    for name in names {
+        assert!(!name.is_empty() && name.bytes().all(|b| b.is_ascii_lowercase() || b == b'_'));
+    }
+}
+
+#[test]
+fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
+    let law = law();
+    let mut spheres = checked_pair();
+    let mass = spheres[0].mass;
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    // A wall facing +x, 0.1 mm beyond sphere 0's left side (sphere 1 is far in front of it).
+    let left = spheres[0].position.x - spheres[0].radius;
+    let wall = Wall::new(Vec3::new(left - 1e-4, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0)).unwrap();
+    let mut b = PairBuffers::new(2);
+    let mut scene = Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut spheres,
+        b.buffers(),
+        [wall],
+    )
+    .unwrap();
+    assert_eq!(scene.step(&input).unwrap().wall_contacts, 0);
+    // Moved 0.2 mm toward the sphere: it now overlaps sphere 0 by about 0.1 mm.
+    let moved = scene.walls()[0]
+        .moved_to(Vec3::new(left + 1e-4, 0.0, 0.0))
+        .unwrap();
+    scene.walls_mut()[0] = moved;
+    assert_eq!(scene.walls()[0].point(), moved.point());
+    assert_eq!(scene.step(&input).unwrap().wall_contacts, 1);
+    let (force, _) = scene.load(0).unwrap();
+    assert!(force.x > 0.0, "the wall pushes sphere 0 in +x: {force:?}");
+    assert_eq!(scene.load(1).unwrap().0, Vec3::ZERO);
+}
