@@ -41,3 +41,16 @@ fn stored_spring_laws_keep_three_floats_per_contact() {
     assert_eq!(state_size::<ModelB<f64>>(), 24);
     assert_eq!(state_size::<ModelAA<f64>>(), 24);
 }
+
+#[test]
+fn a_law_reports_the_slots_it_was_built_with() {
+    use soft_sphere::{LeverArm, TangentialParameters};
+    let normal = LinearSpringDashpot::new(1000.0, 0.7).unwrap();
+    let tangential = ModelAA(TangentialParameters::new(300.0, 0.4, 0.5).unwrap());
+    let law = ContactLaw::new(normal, tangential);
+    assert_eq!((law.normal(), law.tangential()), (&normal, &tangential));
+    // The radius is the lever arm unless the contact plane is asked for.
+    assert_eq!(law.lever_arm(), LeverArm::Radius);
+    let plane = law.with_lever_arm(LeverArm::ContactPlane);
+    assert_eq!(plane.lever_arm(), LeverArm::ContactPlane);
+}
