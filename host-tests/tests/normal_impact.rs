@@ -4,7 +4,7 @@
 
 use host_tests::analytic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
-use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, Micromath, ParameterError};
+use soft_sphere::{ContactLaw, Frictionless, Law, LinearSpringDashpot, Micromath, ParameterError};
 
 const STIFFNESS: f64 = 1000.0;
 const RADIUS: f64 = 2.5e-3;
@@ -108,9 +108,36 @@ fn kernel_contact_duration_matches_the_closed_form() {
     let critical = LinearSpringDashpot::new(STIFFNESS, 0.0).unwrap();
     let law = ContactLaw::new(critical, Frictionless);
     assert!(law.contact_duration(1.0).is_infinite());
+    // Without an end, 1/50 of the undamped half-period pi / w0 stands in for the duration (it is
+    // below a fifth of the limit, 0.166 / w0 at critical damping); an engine generic over the
+    // sealed `Law` trait sees the same step.
+    let w0 = (STIFFNESS / 1.0f64).sqrt();
+    assert!(
+        (law.recommended_time_step(1.0) * 50.0 * w0 / std::f64::consts::PI - 1.0).abs() < 1e-12
+    );
+    fn through_trait<L: Law<Float = f64>>(law: &L, mass: f64) -> f64 {
+        law.recommended_time_step(mass)
+    }
+    assert_eq!(through_trait(&law, 1.0), law.recommended_time_step(1.0));
     let law = ContactLaw::new(critical.with_attraction_clamped(), Frictionless);
-    let beta = (STIFFNESS / 1.0f64).sqrt();
+    let beta = w0;
     assert!((law.contact_duration(1.0) * beta / 2.0 - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn the_oscillator_has_the_damping_ratio_of_its_restitution() {
+    for e in RESTITUTIONS {
+        let law = ContactLaw::new(
+            LinearSpringDashpot::new(STIFFNESS, e).unwrap(),
+            Frictionless,
+        );
+        let oscillator = law.oscillator(1.7e-4);
+        // zeta = -ln e / sqrt(pi^2 + ln^2 e), and beta / w0 is that ratio.
+        let zeta = -e.ln() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
+        assert!((oscillator.damping_ratio() - zeta).abs() < 1e-12, "e = {e}");
+        let w0 = (STIFFNESS / 1.7e-4f64).sqrt();
+        assert!((oscillator.natural_frequency / w0 - 1.0).abs() < 1e-12);
+    }
 }
 
 #[test]
@@ -181,13 +208,19 @@ fn a_clamped_law_built_for_a_rebound_ratio_rebounds_with_it() {
     let half = LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 0.5).unwrap();
     let bisected = LinearSpringDashpot::new(STIFFNESS, 0.4363).unwrap();
     assert!((half.damping_ratio() - bisected.damping_ratio()).abs() < 1e-4);
-    // Below exp(-2) no damping ratio up to critical reaches it.
+    // Below exp(-2) no damping ratio up to critical reaches it; the error says where the floor is.
     for unreachable in [0.0, 0.1, 0.135] {
-        assert!(matches!(
+        assert_eq!(
             LinearSpringDashpot::clamped_with_rebound(STIFFNESS, unreachable),
-            Err(ParameterError::ReboundUnreachable { .. })
-        ));
+            Err(ParameterError::ReboundUnreachable {
+                rebound: unreachable,
+                lowest: (-2.0f64).exp()
+            })
+        );
     }
+    // exp(-2) itself is critical damping.
+    let lowest = LinearSpringDashpot::clamped_with_rebound(STIFFNESS, (-2.0f64).exp()).unwrap();
+    assert!((lowest.damping_ratio() - 1.0).abs() < 1e-12);
     assert!(LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 0.136).is_ok());
     assert_eq!(
         LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 1.5),
