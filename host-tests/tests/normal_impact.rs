@@ -106,6 +106,14 @@ fn kernel_contact_duration_matches_the_closed_form() {
     }
     // Critical damping: the free contact never ends; the clamped one ends at t = 2 / beta.
     let critical = LinearSpringDashpot::new(STIFFNESS, 0.0).unwrap();
+    assert!(
+        !critical.clamps_attraction(),
+        "the pull is kept unless the clamp is asked for"
+    );
+    assert_eq!(
+        (critical.stiffness(), critical.restitution()),
+        (STIFFNESS, 0.0)
+    );
     let law = ContactLaw::new(critical, Frictionless);
     assert!(law.contact_duration(1.0).is_infinite());
     // Without an end, 1/50 of the undamped half-period pi / w0 stands in for the duration (it is
@@ -183,9 +191,29 @@ fn a_clamped_law_built_for_a_rebound_ratio_rebounds_with_it() {
     for target in [0.2, 0.5, 0.75, 0.9, 0.98, 1.0] {
         let normal = LinearSpringDashpot::clamped_with_rebound(STIFFNESS, target).unwrap();
         assert!(normal.clamps_attraction());
+        assert_eq!(
+            (normal.stiffness(), normal.restitution()),
+            (STIFFNESS, target)
+        );
+        // Its oscillator, and the end of its force at wd t = 2 atan(wd / beta).
+        let mass = 1.7e-4;
+        let zeta = normal.damping_ratio();
+        let w0 = (STIFFNESS / mass).sqrt();
+        let (beta, wd) = (zeta * w0, w0 * (1.0 - zeta * zeta).sqrt());
+        let oscillator = ContactLaw::new(normal, Frictionless).oscillator(mass);
+        assert!(
+            (oscillator.damped_frequency - wd).abs() <= 1e-12 * w0,
+            "target {target}"
+        );
+        let end = if beta > 0.0 {
+            2.0 * (wd / beta).atan() / wd
+        } else {
+            std::f64::consts::PI / w0
+        };
+        let duration = ContactLaw::new(normal, Frictionless).contact_duration(mass);
+        assert!((duration / end - 1.0).abs() < 1e-12, "target {target}");
         // Schwager & Poeschel's closed form, written independently in `analytic`, for the
         // unclipped restitution with the same damping ratio gives the target back.
-        let zeta = normal.damping_ratio();
         let same_dashpot = (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
         assert!(
             (analytic::clamped_restitution(same_dashpot) - target).abs() < 1e-9,

@@ -205,12 +205,9 @@ impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
         let o = self.oscillator::<F::DefaultBackend>(effective_mass);
         let (wd, beta) = (o.damped_frequency, o.decay_rate);
         if !self.clamp_attraction {
-            // Free contact ends when the overlap returns to zero: half a damped period.
-            return if wd > F::ZERO {
-                F::PI / wd
-            } else {
-                F::INFINITY
-            };
+            // Free contact ends when the overlap returns to zero: half a damped period (never,
+            // pi / 0 = infinity, at critical damping).
+            return F::PI / wd;
         }
         // Clamped contact ends when k delta + eta delta' = 0, at wd t = 2 atan(wd / beta).
         if wd > F::ZERO {
