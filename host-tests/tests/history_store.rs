@@ -57,6 +57,7 @@ fn contacts_are_inserted_updated_and_dropped() {
     assert!(store.is_empty());
     assert!(step(&mut store, &law, 0, 1).unwrap().forces().is_some());
     assert_eq!(store.len(), 1);
+    assert!(!store.is_empty() && !store.is_full());
     let first = *store.get(ContactKey::new(0, 1)).unwrap();
     assert_ne!(
         first.displacement,
@@ -88,6 +89,7 @@ fn a_full_store_reports_it_and_loses_nothing() {
     let law = law();
     let mut store = Store::<4>::new();
     for k in 0..4 {
+        assert!(!store.is_full(), "{k} of 4 stored");
         step(&mut store, &law, k, k + 1).unwrap();
     }
     assert!(store.is_full());

@@ -49,6 +49,15 @@ fn a_law_reports_the_slots_it_was_built_with() {
     let tangential = ModelAA(TangentialParameters::new(300.0, 0.4, 0.5).unwrap());
     let law = ContactLaw::new(normal, tangential);
     assert_eq!((law.normal(), law.tangential()), (&normal, &tangential));
+    let parameters = tangential.0;
+    assert_eq!(
+        (
+            parameters.stiffness(),
+            parameters.dashpot_ratio(),
+            parameters.friction()
+        ),
+        (300.0, 0.4, 0.5)
+    );
     // The radius is the lever arm unless the contact plane is asked for.
     assert_eq!(law.lever_arm(), LeverArm::Radius);
     let plane = law.with_lever_arm(LeverArm::ContactPlane);

@@ -4,7 +4,9 @@
 
 use host_tests::analytic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
-use soft_sphere::{ContactLaw, Frictionless, Law, LinearSpringDashpot, Micromath, ParameterError};
+use soft_sphere::{
+    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, Micromath, ParameterError,
+};
 
 const STIFFNESS: f64 = 1000.0;
 const RADIUS: f64 = 2.5e-3;
@@ -254,4 +256,28 @@ fn a_clamped_law_built_for_a_rebound_ratio_rebounds_with_it() {
         LinearSpringDashpot::clamped_with_rebound(STIFFNESS, 1.5),
         Err(ParameterError::RestitutionOutOfRange)
     );
+}
+
+#[test]
+fn the_undamped_spring_rebounds_elastically_at_the_closed_form_duration() {
+    let law = ContactLaw::new(LinearSpring::new(STIFFNESS).unwrap(), Frictionless);
+    let sphere = incoming_sphere(RADIUS, DENSITY, SPEED, 0.0);
+    let mass = sphere.mass;
+    let w0 = (STIFFNESS / mass).sqrt();
+    let oscillator = law.oscillator(mass);
+    assert!((oscillator.natural_frequency / w0 - 1.0).abs() < 1e-12);
+    assert_eq!(oscillator.damped_frequency, oscillator.natural_frequency);
+    assert_eq!(
+        (oscillator.damping_coefficient, oscillator.decay_rate),
+        (0.0, 0.0)
+    );
+    // Half an undamped period; the stability bound 2 / w0.
+    let t_c = std::f64::consts::PI / w0;
+    assert!((law.contact_duration(mass) / t_c - 1.0).abs() < 1e-12);
+    assert!((law.critical_time_step(mass) * w0 / 2.0 - 1.0).abs() < 1e-12);
+    let dt = law.time_step(t_c / 2000.0, mass).unwrap();
+    let outcome = wall_impact(&law, sphere, &floor(), dt, 20_000, |_| {}).unwrap();
+    assert!((outcome.rebound.velocity.z / SPEED - 1.0).abs() < 1e-5);
+    assert!((outcome.contact_duration / t_c - 1.0).abs() < 1e-3);
+    assert!((outcome.max_overlap * w0 / SPEED - 1.0).abs() < 1e-3);
 }
