@@ -63,3 +63,12 @@ fn a_law_reports_the_slots_it_was_built_with() {
     let plane = law.with_lever_arm(LeverArm::ContactPlane);
     assert_eq!(plane.lever_arm(), LeverArm::ContactPlane);
 }
+
+#[test]
+fn vectors_convert_to_and_from_arrays() {
+    use soft_sphere::Vec3;
+    let v = Vec3::new(1.5f64, -2.0, 0.25);
+    assert_eq!(v.to_array(), [1.5, -2.0, 0.25]);
+    assert_eq!(Vec3::from([1.5, -2.0, 0.25]), v);
+    assert_eq!(Vec3::from(v.to_array()), v);
+}
