@@ -455,3 +455,19 @@ fn contact_and_coincidence_begin_exactly_where_documented() {
     on_floor.position.z = on_floor.radius.next_down();
     assert!(wall_touches(&on_floor), "just inside: touching");
 }
+
+#[test]
+fn a_stored_state_that_would_overflow_is_refused_though_the_force_is_finite() {
+    use soft_sphere::ModelAALuding;
+    // Luding's reset divides by k_t: with a subnormal k_t the displacement it would store for a
+    // sliding contact is infinite while the force (at the Coulomb limit) is finite.
+    let law = ContactLaw::new(
+        LinearSpringDashpot::new(1.0e4, 0.8).unwrap(),
+        ModelAALuding(TangentialParameters::new(1e-310, 0.5, 1e-3).unwrap()),
+    );
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let (i, j) = touching_pair();
+    rejects(ContactError::NonFiniteResult, |state| {
+        law.sphere_sphere(&i, &j, state, dt)
+    });
+}

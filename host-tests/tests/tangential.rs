@@ -646,3 +646,74 @@ fn ludings_reset_leaves_spring_and_dashpot_equal_to_the_sliding_force() {
     let rb = capped.sphere_wall(&sphere, &floor, &mut b, dt).unwrap();
     assert_eq!((ra, a), (rb, b));
 }
+
+/// A pair overlapping by 0.1 mm along x, j moving at `speed` in y relative to i, no spin.
+fn sliding_pair(speed: f64) -> (Sphere<f64>, Sphere<f64>) {
+    let i = Sphere::solid(Vec3::ZERO, 1.0e-3, 2500.0);
+    let mut j = Sphere::solid(Vec3::new(1.9e-3, 0.0, 0.0), 1.0e-3, 2500.0);
+    j.velocity = Vec3::new(0.0, speed, 0.0);
+    (i, j)
+}
+
+#[test]
+fn model_aa_cuts_its_spring_only_when_the_contact_slides() {
+    // A stored spring of 1.5 times the Coulomb limit, and slips that run back against it: the
+    // dashpot then holds the trial force within the limit, the contact sticks, and the spring is
+    // kept whole (Model AA limits the displacement only in a sliding step).
+    let (k_n, k_t, mu) = (1.0e4, 3.0e3, 0.4);
+    let law = ContactLaw::new(
+        LinearSpringDashpot::new(k_n, 0.3).unwrap(),
+        ModelAA(TangentialParameters::new(k_t, 1.0, mu).unwrap()),
+    );
+    let dt = law.time_step(1e-7, 1e-6).unwrap();
+    let limit = mu * k_n * 1.0e-4; // the normal force is about k_n delta: no approach speed
+    let stored = SpringDisplacement {
+        displacement: Vec3::new(0.0, -1.5 * limit / k_t, 0.0),
+    };
+    let (mut sticking_past_the_cap, mut sliding) = (0, 0);
+    for k in -200..=200 {
+        let (i, j) = sliding_pair(5.0 * k as f64 / 200.0);
+        let mut state = stored;
+        let Ok(Interaction::Touching(c)) = law.sphere_sphere(&i, &j, &mut state, dt) else {
+            panic!("the pair touches");
+        };
+        let grown = stored.displacement + c.slip_velocity * dt.seconds();
+        if c.sliding {
+            sliding += 1;
+            let longest = mu * c.normal_force / k_t;
+            assert!(state.displacement.norm_squared().sqrt() <= longest * (1.0 + 1e-12));
+        } else {
+            assert_eq!(
+                state.displacement, grown,
+                "a sticking contact keeps its whole spring"
+            );
+            if grown.norm_squared().sqrt() > 1.2 * limit / k_t {
+                sticking_past_the_cap += 1;
+            }
+        }
+    }
+    assert!(
+        sliding > 0 && sticking_past_the_cap > 0,
+        "{sliding} sliding, {sticking_past_the_cap} sticking past the cap"
+    );
+}
+
+#[test]
+fn a_spring_in_the_plane_keeps_its_length_down_to_the_smallest_normal_float() {
+    use soft_sphere::Libm;
+    use soft_sphere::tangential::rotate_into_tangent_plane;
+    let normal = Vec3::new(0.0, 0.0, 1.0);
+    // A tangential part whose squared length is exactly the smallest normal float is a spring;
+    // one float shorter it counts as none.
+    let root = f64::MIN_POSITIVE.sqrt();
+    let kept = Vec3::new(root, 0.0, 1e-3);
+    let turned = rotate_into_tangent_plane::<f64, Libm>(kept, normal);
+    // Turned into the plane with its whole length.
+    assert!(turned.x > 0.0 && turned.y == 0.0 && turned.z == 0.0);
+    assert!((turned.x / kept.norm_squared().sqrt() - 1.0).abs() < 1e-12);
+    let gone = Vec3::new(root.next_down(), 0.0, 1e-3);
+    assert_eq!(
+        rotate_into_tangent_plane::<f64, Libm>(gone, normal),
+        Vec3::ZERO
+    );
+}

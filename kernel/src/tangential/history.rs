@@ -29,7 +29,8 @@ impl<F: Float> ContactState for SpringDisplacement<F> {
 
 /// Turns a stored displacement into the tangent plane of the current normal `n`: removes its
 /// normal component and restores its length, so a rolling pair neither tilts the spring out of
-/// the plane nor shortens it. A displacement with no tangential part left becomes zero.
+/// the plane nor shortens it. A displacement with no tangential part left (its squared length
+/// below the smallest normal float) becomes zero.
 #[inline(always)]
 pub fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     displacement: Vec3<F>,
