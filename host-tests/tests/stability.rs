@@ -116,3 +116,23 @@ fn below_the_limit_accuracy_depends_on_where_a_step_meets_the_contact() {
         assert!(spread < tolerance, "t_c/{steps}: {spread}");
     }
 }
+
+#[test]
+fn model_c_is_limited_by_the_root_of_its_step_dependent_dashpot() {
+    use soft_sphere::ModelC;
+    // Model C's tangential force is a dashpot of strength c = k_t dt + eta_t: a sticking contact
+    // of mass m_t stays stable while c dt < 2 m_t, that is below the positive root of
+    // k_t dt^2 + eta_t dt = 2 m_t. A stiff tangential spring makes that root the law's limit.
+    let (k_n, k_t, ratio, e, mass): (f64, f64, f64, f64, f64) = (1000.0, 8000.0, 0.5, 0.7, 1.0e-5);
+    let normal = LinearSpringDashpot::new(k_n, e).unwrap();
+    let law = ContactLaw::new(
+        normal,
+        ModelC(TangentialParameters::new(k_t, ratio, 0.3).unwrap()),
+    );
+    let eta_t = ratio * law.oscillator(mass).damping_coefficient;
+    let m_t = 2.0 / 7.0 * mass;
+    let root = (-eta_t + (eta_t * eta_t + 8.0 * k_t * m_t).sqrt()) / (2.0 * k_t);
+    let normal_limit = ContactLaw::new(normal, Frictionless).critical_time_step(mass);
+    assert!(root < normal_limit);
+    assert!((law.critical_time_step(mass) / root - 1.0).abs() < 1e-12);
+}
