@@ -62,42 +62,97 @@ fn input(
     }
 }
 
-/// Touching pairs by brute force with the minimum image in x and y.
-fn brute_force_pairs(spheres: &[CheckedSphere<f64>], lx: f64, ly: f64) -> usize {
-    let mut count = 0;
+/// Touching pairs by brute force with the minimum image in x and y, and how many of them touch
+/// through a periodic image.
+fn brute_force_pairs(spheres: &[CheckedSphere<f64>], lx: f64, ly: f64) -> (usize, usize) {
+    let (mut count, mut across) = (0, 0);
     for a in 0..spheres.len() {
         for b in a + 1..spheres.len() {
             let mut d = spheres[b].position - spheres[a].position;
-            d.x -= lx * (d.x / lx).round();
-            d.y -= ly * (d.y / ly).round();
+            let (sx, sy) = ((d.x / lx).round(), (d.y / ly).round());
+            d.x -= lx * sx;
+            d.y -= ly * sy;
             let reach = spheres[a].radius + spheres[b].radius;
             if d.norm_squared() < reach * reach {
                 count += 1;
+                across += usize::from(sx != 0.0 || sy != 0.0);
             }
         }
     }
-    count
+    (count, across)
+}
+
+/// `count` spheres placed at random in a 4 mm box periodic in x and y, no two closer than 0.9
+/// diameters (with the periodic image): a dense packing with many pairs touching across the
+/// periodic boundaries.
+fn random_packing(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
+    let side = 4.0e-3;
+    let domain = Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(side, side, side),
+        periodic_x: true,
+        periodic_y: true,
+    };
+    let mut random = Xorshift::new(seed);
+    let mut spheres: Vec<Sphere<f64>> = Vec::new();
+    let image = |d: f64| d - side * (d / side).round();
+    while spheres.len() < count {
+        let r = DIAMETER / 2.0;
+        let p = Vec3::new(
+            random.unit() * side,
+            random.unit() * side,
+            r + random.unit() * (side - 2.0 * r),
+        );
+        let clear = spheres.iter().all(|s| {
+            let d = s.position - p;
+            let d = Vec3::new(image(d.x), image(d.y), d.z);
+            d.norm_squared() >= (0.9 * DIAMETER) * (0.9 * DIAMETER)
+        });
+        if clear {
+            let mut s = Sphere::solid(p, r, 2500.0);
+            s.velocity = Vec3::new(
+                random.unit() - 0.5,
+                random.unit() - 0.5,
+                random.unit() - 0.5,
+            ) * 0.2;
+            spheres.push(s);
+        }
+    }
+    (spheres, domain)
 }
 
 #[test]
 fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
     let law = law();
-    for seed in 1..6 {
-        let (spheres, domain) = gas(300, seed);
+    // The box at the origin, and moved off it (cells are counted from its lower corner).
+    let offset = Vec3::new(-3.1e-3, 1.7e-3, 2.3e-3);
+    let mut across = 0;
+    for (seed, shift) in (1..6).flat_map(|seed| [(seed, Vec3::ZERO), (seed, offset)]) {
+        let (mut spheres, mut domain) = random_packing(40, seed);
+        for s in &mut spheres {
+            s.position += shift;
+        }
+        (domain.lower, domain.upper) = (domain.lower + shift, domain.upper + shift);
         let mut scene =
             OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
         let m = scene.spheres[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), Integrator::SymplecticEuler);
-        for _ in 0..50 {
+        let lengths = domain.upper - domain.lower;
+        for _ in 0..20 {
             let before = scene.spheres.clone();
             let mut found = 0;
             scene
                 .run(&input, 1, |_, stats| found = stats.pair_contacts)
                 .unwrap();
-            let (lx, ly) = (domain.upper.x, domain.upper.y);
-            assert_eq!(found, brute_force_pairs(&before, lx, ly), "seed {seed}");
+            let (expected, crossing) = brute_force_pairs(&before, lengths.x, lengths.y);
+            assert_eq!(found, expected, "seed {seed}, box moved by {shift:?}");
+            across += crossing;
         }
     }
+    assert!(
+        across > 100,
+        "{across} pair-steps across a periodic boundary"
+    );
 }
 
 #[test]
