@@ -964,3 +964,60 @@ fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
     assert!(force.x > 0.0, "the wall pushes sphere 0 in +x: {force:?}");
     assert_eq!(scene.load(1).unwrap().0, Vec3::ZERO);
 }
+
+#[test]
+fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
+    let law = law();
+    let g = 9.81;
+    let (dt, steps) = (2e-6, 500);
+    for integrator in Integrator::ALL {
+        let mut sphere = Sphere::solid(Vec3::new(3e-3, 3e-3, 3e-3), DIAMETER / 2.0, 2500.0);
+        sphere.velocity = Vec3::new(0.0, 0.0, 0.3);
+        let mass = sphere.mass;
+        let far = Sphere::solid(Vec3::new(0.5e-3, 0.5e-3, 0.5e-3), DIAMETER / 2.0, 2500.0);
+        let mut scene =
+            OwnedScene::<Law, _>::new(vec![sphere, far], open_box(), (DIAMETER, 1e-4), NoWalls)
+                .unwrap();
+        let input = input(&law, (Vec3::new(0.0, 0.0, -g), dt, mass), integrator);
+        scene.run(&input, steps, |_, _| {}).unwrap();
+        let moved = scene.spheres.iter().find(|s| s.position.x > 1e-3).unwrap();
+        // Velocity Verlet is exact under a constant force; symplectic Euler kicks first, so it
+        // falls g dt^2 n / 2 further.
+        let (n, v0) = (steps as f64, 0.3);
+        let t = n * dt;
+        let exact = 3e-3 + v0 * t - 0.5 * g * t * t;
+        let expected = match integrator {
+            Integrator::VelocityVerlet => exact,
+            Integrator::SymplecticEuler => exact - 0.5 * g * dt * dt * n,
+        };
+        assert!(
+            (moved.position.z - expected).abs() < 1e-15,
+            "{integrator:?}: {} against {expected}",
+            moved.position.z
+        );
+        assert!(
+            (moved.velocity.z - (v0 - g * t)).abs() < 1e-12,
+            "{integrator:?}"
+        );
+    }
+}
+
+#[test]
+fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
+    let law = law();
+    let (spheres, domain) = gas(1000, 7);
+    let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+    let m = scene.spheres[0].mass;
+    // Far into the second half of the spheres, which a second thread advances.
+    scene.spheres[900]
+        .update(|s| s.velocity.x = f64::MAX)
+        .unwrap();
+    let input = input(
+        &law,
+        (Vec3::new(1e300, 0.0, 0.0), 2e-6, m),
+        Integrator::SymplecticEuler,
+    );
+    let pool = Threads::new(2).unwrap();
+    let outcome = scene.run_on(&input, 1, &pool, |_, _| {});
+    assert_eq!(outcome, Err(StepError::Diverged { index: 900 }));
+}
