@@ -231,9 +231,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
 
     /// Kicks every sphere by `kick` seconds under its contact force and torque and gravity,
     /// then, given a `drift`, moves it that long at its new velocity, wraps it into the periodic
-    /// box (a sphere that crosses invalidates the list's image shifts) and checks the skin (a
-    /// sphere that moved more than half of it since the last build could touch a pair the list
-    /// does not hold).
+    /// box and checks the skin (a sphere that moved more than half of it since the last build
+    /// could touch a pair the list does not hold; one that wrapped has broken its pairs' image
+    /// shifts, and is a box length from where it was).
     ///
     /// # Errors
     /// [`StepError::Diverged`] when a sphere's position or velocity would no longer be finite;
@@ -279,18 +279,15 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     let Some(dt) = drift else { return false };
                     sphere.position += sphere.velocity * dt;
                     let p = &mut sphere.position;
-                    let mut stale = false;
                     if domain.periodic_x {
-                        let wrapped = wrap_into(p.x, domain.lower.x, domain.upper.x);
-                        stale |= wrapped != p.x;
-                        p.x = wrapped;
+                        p.x = wrap_into(p.x, domain.lower.x, domain.upper.x);
                     }
                     if domain.periodic_y {
-                        let wrapped = wrap_into(p.y, domain.lower.y, domain.upper.y);
-                        stale |= wrapped != p.y;
-                        p.y = wrapped;
+                        p.y = wrap_into(p.y, domain.lower.y, domain.upper.y);
                     }
-                    stale | ((*p - anchor).norm_squared() > half_skin_squared)
+                    // A sphere that wrapped sits about a box length (at least three cells) from
+                    // its anchor, so this also stales the list whose image shifts it broke.
+                    (*p - anchor).norm_squared() > half_skin_squared
                 });
                 match moved {
                     Ok(stale) => piece.stale |= stale,
