@@ -533,13 +533,27 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
 #[test]
 fn threads_give_the_same_bits_as_one_thread() {
     let law = law();
-    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    // A floor, and a ceiling through the top layer, so that spheres at both ends of the sphere
+    // order (each end in another thread's stretch) have stored wall contacts.
+    let top = gas(1000, 5)
+        .0
+        .iter()
+        .map(|s| s.position.z)
+        .fold(0.0, f64::max);
+    let walls = [
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        Wall::new(
+            Vec3::new(0.0, 0.0, top + 0.45 * DIAMETER),
+            Vec3::new(0.0, 0.0, -1.0),
+        )
+        .unwrap(),
+    ];
     let gravity = Vec3::new(0.0, 0.0, -9.81);
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let run = |threads: Option<usize>| {
             let (spheres, domain) = gas(1000, 5);
             let mut scene =
-                OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+                OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), walls).unwrap();
             let m = scene.spheres[0].mass;
             let input = input(&law, (gravity, 4e-6, m), integrator);
             let mut contacts = Vec::new();
@@ -1020,4 +1034,150 @@ fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
     let pool = Threads::new(2).unwrap();
     let outcome = scene.run_on(&input, 1, &pool, |_, _| {});
     assert_eq!(outcome, Err(StepError::Diverged { index: 900 }));
+}
+
+/// A box of side 2^-7 m centred on the origin, periodic in x and y, and a sphere in it moving at
+/// `speed` in x, stepped at 2^-19 s: each step moves it by exactly 2^-20 m, so positions are
+/// exact and ties can be reached on purpose. A second sphere rests far from it.
+fn exact_motion(speed: f64, start_x: f64) -> (OwnedScene<Law, NoWalls>, StepInputParts) {
+    let half = 2f64.powi(-8);
+    let domain = Domain {
+        lower: Vec3::new(-half, -half, -half),
+        upper: Vec3::new(half, half, half),
+        periodic_x: true,
+        periodic_y: true,
+    };
+    let mut moving = Sphere::solid(Vec3::new(start_x, 0.0, 0.0), DIAMETER / 2.0, 2500.0);
+    moving.velocity = Vec3::new(speed, 0.0, 0.0);
+    let resting = Sphere::solid(Vec3::new(0.0, 2.5e-3, 2.5e-3), DIAMETER / 2.0, 2500.0);
+    let mass = moving.mass;
+    let scene = OwnedScene::new(
+        vec![moving, resting],
+        domain,
+        (DIAMETER, 2f64.powi(-13)),
+        NoWalls,
+    )
+    .unwrap();
+    (scene, (2f64.powi(-19), mass))
+}
+
+/// The step and the sphere mass of [`exact_motion`].
+type StepInputParts = (f64, f64);
+
+#[test]
+fn the_box_is_half_open_and_the_skin_test_strict() {
+    let law = law();
+    let step = 2f64.powi(-20);
+    let lower = -(2f64.powi(-8));
+    let moving = |scene: &OwnedScene<Law, NoWalls>| {
+        scene
+            .spheres
+            .iter()
+            .find(|s| s.velocity.x != 0.0)
+            .unwrap()
+            .position
+            .x
+    };
+    // Moving down to the lower face: a sphere on it stays there; one step on it wraps to just
+    // below the upper face.
+    let (mut scene, (dt, mass)) = exact_motion(-0.5, lower + 1024.0 * step);
+    let down = input(&law, (Vec3::ZERO, dt, mass), Integrator::SymplecticEuler);
+    scene.run(&down, 1024, |_, _| {}).unwrap();
+    assert_eq!(moving(&scene), lower);
+    scene.run(&down, 1, |_, _| {}).unwrap();
+    assert_eq!(moving(&scene), -lower - step);
+    // The list is rebuilt when a sphere has moved more than half the skin (2^-14 m, 64 steps):
+    // after exactly half it is not.
+    let builds = |steps: usize| {
+        let (mut scene, (dt, mass)) = exact_motion(0.5, 0.0);
+        let input = input(&law, (Vec3::ZERO, dt, mass), Integrator::SymplecticEuler);
+        scene.run(&input, steps, |_, _| {}).unwrap();
+        scene.list_builds
+    };
+    assert_eq!((builds(65), builds(66)), (1, 2));
+}
+
+#[test]
+fn threads_keep_every_spheres_wall_history() {
+    // A monolayer sliding on the floor: every sphere, in every thread's stretch, has a stored
+    // wall spring, and two threads must give the serial bits.
+    let law = law();
+    let (side, spacing) = (32, 1.2 * DIAMETER);
+    let width = side as f64 * spacing;
+    let domain = Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(width, width, 3e-3),
+        periodic_x: true,
+        periodic_y: true,
+    };
+    let mut random = Xorshift::new(21);
+    let mut spheres = Vec::new();
+    for k in 0..side * side {
+        let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
+        let mut s = Sphere::solid(
+            Vec3::new(x * spacing, y * spacing, 0.5e-3 - 2e-8),
+            DIAMETER / 2.0,
+            2500.0,
+        );
+        // Slow enough that the floor contacts stick: their springs carry the history.
+        s.velocity = Vec3::new(random.unit() - 0.5, random.unit() - 0.5, 0.0) * 2e-4;
+        s.angular_velocity = Vec3::new(random.unit() - 0.5, random.unit() - 0.5, 0.0) * 0.2;
+        spheres.push(s);
+    }
+    // Two walls (a ceiling nobody reaches), so each sphere owns two wall states.
+    let walls = [
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        Wall::new(Vec3::new(0.0, 0.0, 3e-3), Vec3::new(0.0, 0.0, -1.0)).unwrap(),
+    ];
+    let m = spheres[0].mass;
+    let input = input(
+        &law,
+        (Vec3::new(0.0, 0.0, -9.81), 4e-6, m),
+        Integrator::SymplecticEuler,
+    );
+    // Serial (one stretch) against two threads (two stretches of the wall states).
+    let run = |threads: Option<usize>| {
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), walls).unwrap();
+        let mut on_floor = 0;
+        let record = |_: usize, s: &StepStats<f64>| on_floor = s.wall_contacts;
+        match threads {
+            None => scene.run(&input, 200, record).unwrap(),
+            Some(n) => scene
+                .run_on(&input, 200, &Threads::new(n).unwrap(), record)
+                .unwrap(),
+        }
+        (motion_bits(&scene.spheres), on_floor)
+    };
+    let (serial, on_floor) = run(None);
+    assert_eq!(on_floor, side * side, "every sphere touches the floor");
+    assert_eq!(run(Some(2)).0, serial);
+}
+
+#[test]
+fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
+    let law = law();
+    let mass = oblique_pair()[0].mass;
+    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    let pool = Threads::new(2).unwrap();
+    let mut serial = trio((0, 1.0));
+    VecBuffers::<4>::new(3, 4).run(&input, &mut serial, 80);
+    let mut threaded = trio((0, 1.0));
+    let mut b = VecBuffers::<4>::new(3, 4);
+    let buffers = SceneBuffers {
+        spheres: &mut b.entries,
+        cells: &mut b.cells,
+        list: &mut b.list,
+        parking: &mut b.parking,
+        walls: &mut [],
+        pair_results: &mut [],
+    };
+    let mut scene =
+        Scene::new(open_box(), (DIAMETER, 0.0), &mut threaded, buffers, NoWalls).unwrap();
+    let touching = (0..80)
+        .map(|_| scene.step_on(&input, &pool).unwrap().pair_contacts)
+        .max();
+    drop(scene);
+    assert_eq!(touching, Some(2), "both pairs touched at once");
+    assert_eq!(motion_bits(&threaded), motion_bits(&serial));
 }
