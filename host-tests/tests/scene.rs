@@ -1181,3 +1181,102 @@ fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
     assert_eq!(touching, Some(2), "both pairs touched at once");
     assert_eq!(motion_bits(&threaded), motion_bits(&serial));
 }
+
+#[test]
+fn each_sphere_keeps_its_own_spring_on_each_wall() {
+    // Three spheres sliding slowly on the floor, the middle one also against a side wall: the
+    // scene against the contact law applied to each sphere and wall with its own stored state.
+    let law = law();
+    let r = DIAMETER / 2.0;
+    let sink = 2e-8;
+    let mut spheres: Vec<Sphere<f64>> = (0..3)
+        .map(|k| {
+            let mut s = Sphere::solid(
+                Vec3::new(1e-3 + 1.5e-3 * k as f64, 3e-3, r - sink),
+                r,
+                2500.0,
+            );
+            s.velocity = Vec3::new(1e-4 * (k as f64 + 1.0), 0.0, 0.0);
+            s
+        })
+        .collect();
+    let walls = [
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        Wall::new(
+            Vec3::new(0.0, 3e-3 + r - sink, 0.0),
+            Vec3::new(0.0, -1.0, 0.0),
+        )
+        .unwrap(),
+    ];
+    // The side wall touches every sphere: move the outer two away from it in y.
+    spheres[0].position.y -= 1e-4;
+    spheres[2].position.y -= 1e-4;
+    // Gravity presses the spheres onto the floor and the middle one onto the side wall, each
+    // a little past its static overlap, so that every contact lasts the run.
+    let gravity = Vec3::new(0.0, 4.9, -9.81);
+    let input = input(
+        &law,
+        (gravity, 2e-6, spheres[0].mass),
+        Integrator::SymplecticEuler,
+    );
+    let steps = 300;
+
+    let mut direct = spheres.clone();
+    let mut states = [[SpringDisplacement::default(); 2]; 3];
+    let mut touching = [[0; 2]; 3];
+    for _ in 0..steps {
+        for (s, sphere) in direct.iter_mut().enumerate() {
+            let (mut force, mut torque) = (Vec3::ZERO, Vec3::ZERO);
+            for (k, wall) in walls.iter().enumerate() {
+                let contact = law.sphere_wall(sphere, wall, &mut states[s][k], input.time_step);
+                if let Interaction::Touching(c) = contact.unwrap() {
+                    force += c.force_on_i();
+                    torque += c.torque_on_i;
+                    touching[s][k] += 1;
+                }
+            }
+            advance_solid_sphere(
+                sphere,
+                force + gravity * sphere.mass,
+                torque,
+                input.time_step,
+            );
+        }
+    }
+    // Every sphere stayed on the floor, only the middle one met the side wall, most of the run.
+    assert_eq!(touching.map(|t| t[0]), [steps; 3]);
+    assert!(touching[1][1] > steps / 2 && touching[0][1] == 0 && touching[2][1] == 0);
+
+    let mut checked: Vec<CheckedSphere<f64>> = spheres
+        .into_iter()
+        .map(|s| CheckedSphere::new(s).unwrap())
+        .collect();
+    let sizes =
+        Scene::<Law, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), (DIAMETER, 1e-4), 3, 8, false)
+            .unwrap();
+    let mut entries = vec![SphereEntry::default(); sizes.spheres];
+    let mut cells = vec![0; sizes.cells];
+    let mut list = vec![ListEntry::default(); sizes.list];
+    let mut parking = vec![Parking::default(); sizes.parking];
+    let mut wall_states = vec![WallEntry::default(); sizes.walls];
+    let buffers = SceneBuffers {
+        spheres: &mut entries,
+        cells: &mut cells,
+        list: &mut list,
+        parking: &mut parking,
+        walls: &mut wall_states,
+        pair_results: &mut [],
+    };
+    let mut scene =
+        Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 1e-4), &mut checked, buffers, walls)
+            .unwrap();
+    for _ in 0..steps {
+        scene.step(&input).unwrap();
+    }
+    drop(scene);
+    let direct: Vec<CheckedSphere<f64>> = direct
+        .into_iter()
+        .map(|s| CheckedSphere::new(s).unwrap())
+        .collect();
+    assert_eq!(motion_bits(&checked), motion_bits(&direct));
+}
