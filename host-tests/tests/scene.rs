@@ -331,31 +331,37 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
     }
 }
 
-/// Fresh buffers for the two spheres of [`oblique_pair`] in [`open_box`], with `walls` wall
-/// entries, checked against `W`'s count by the scene.
-struct PairBuffers {
-    entries: [SphereEntry<f64>; 2],
+/// Fresh buffers in vectors for `spheres` spheres in [`open_box`] without skin, a list of
+/// `capacity` entries, `walls` wall entries (checked against `W`'s count by the scene), and `K`
+/// parked contacts per sphere.
+struct VecBuffers<const K: usize> {
+    entries: Vec<SphereEntry<f64>>,
     cells: Vec<u32>,
-    list: [ListEntry<SpringDisplacement<f64>>; 4],
-    parking: [Parking<SpringDisplacement<f64>, 4>; 2],
+    list: Vec<ListEntry<SpringDisplacement<f64>>>,
+    parking: Vec<Parking<SpringDisplacement<f64>, K>>,
     walls: Vec<WallEntry<SpringDisplacement<f64>>>,
 }
 
-impl PairBuffers {
-    fn new(walls: usize) -> Self {
-        let sizes =
-            Scene::<Law, NoWalls, 4>::buffer_sizes(&open_box(), (DIAMETER, 0.0), 2, 4, false)
-                .unwrap();
+impl<const K: usize> VecBuffers<K> {
+    fn new(spheres: usize, capacity: usize, walls: usize) -> Self {
+        let sizes = Scene::<Law, NoWalls, K>::buffer_sizes(
+            &open_box(),
+            (DIAMETER, 0.0),
+            spheres,
+            capacity,
+            false,
+        )
+        .unwrap();
         Self {
-            entries: Default::default(),
+            entries: vec![SphereEntry::default(); sizes.spheres],
             cells: vec![0; sizes.cells],
-            list: Default::default(),
-            parking: Default::default(),
+            list: vec![ListEntry::default(); sizes.list],
+            parking: vec![Parking::default(); sizes.parking],
             walls: vec![WallEntry::default(); walls],
         }
     }
 
-    fn buffers(&mut self) -> SceneBuffers<'_, f64, SpringDisplacement<f64>, 4> {
+    fn buffers(&mut self) -> SceneBuffers<'_, f64, SpringDisplacement<f64>, K> {
         SceneBuffers {
             spheres: &mut self.entries,
             cells: &mut self.cells,
@@ -365,6 +371,37 @@ impl PairBuffers {
             pair_results: &mut [],
         }
     }
+
+    /// A scene without walls over these buffers, run for at most `steps` steps; how many
+    /// succeeded, whether a pair touched in the last, and the error that stopped it.
+    fn run(
+        &mut self,
+        input: &StepInput<'_, Law>,
+        spheres: &mut [CheckedSphere<f64>],
+        steps: usize,
+    ) -> (usize, bool, Option<StepError>) {
+        let mut scene = Scene::new(
+            open_box(),
+            (DIAMETER, 0.0),
+            spheres,
+            self.buffers(),
+            NoWalls,
+        )
+        .unwrap();
+        let mut touching = false;
+        for done in 0..steps {
+            match scene.step(input) {
+                Ok(stats) => touching = stats.pair_contacts > 0,
+                Err(error) => return (done, touching, Some(error)),
+            }
+        }
+        (steps, touching, None)
+    }
+}
+
+/// Buffers for the two spheres of [`oblique_pair`] with `walls` wall entries.
+fn pair_buffers(walls: usize) -> VecBuffers<4> {
+    VecBuffers::new(2, 4, walls)
 }
 
 fn checked_pair() -> Vec<CheckedSphere<f64>> {
@@ -409,7 +446,7 @@ fn buffers_that_do_not_fit_the_walls_are_refused() {
 /// and `walls` gives: `None` when the scene is built.
 fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<SceneError> {
     let mut spheres = checked_pair();
-    let mut b = PairBuffers::new(wall_entries);
+    let mut b = pair_buffers(wall_entries);
     Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
@@ -424,7 +461,7 @@ fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<Sc
 fn step_pair_until_touching<'a>(
     law: &Law,
     pair: &'a mut [CheckedSphere<f64>],
-    buffers: &'a mut PairBuffers,
+    buffers: &'a mut VecBuffers<4>,
 ) -> Scene<'a, Law, NoWalls, 4> {
     let input = input(
         law,
@@ -448,7 +485,7 @@ fn step_pair_until_touching<'a>(
 fn stored_states_of_pairs_outside_the_scene_are_refused() {
     let law = law();
     let mut pair = checked_pair();
-    let mut b = PairBuffers::new(0);
+    let mut b = pair_buffers(0);
     step_pair_until_touching(&law, &mut pair, &mut b);
     // The list now holds the pair's stored spring. The same two spheres take it back...
     let mut again = pair.clone();
@@ -514,7 +551,7 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
         (gravity, 2e-6, before[0].mass),
         Integrator::SymplecticEuler,
     );
-    let mut b = PairBuffers::new(0);
+    let mut b = pair_buffers(0);
     let mut scene = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
@@ -593,7 +630,7 @@ fn threads_give_the_same_bits_as_one_thread() {
 fn the_loads_of_a_touching_pair_are_action_and_reaction() {
     let law = law();
     let mut pair = checked_pair();
-    let mut b = PairBuffers::new(0);
+    let mut b = pair_buffers(0);
     let scene = step_pair_until_touching(&law, &mut pair, &mut b);
     let ((f0, t0), (f1, t1)) = (scene.load(0).unwrap(), scene.load(1).unwrap());
     assert!(f0.norm_squared() > 0.0, "the pair pushes");
@@ -628,61 +665,6 @@ fn motion_bits(spheres: &[CheckedSphere<f64>]) -> Vec<[[u64; 3]; 3]> {
         .collect()
 }
 
-/// Buffers in vectors, for `spheres` spheres in [`open_box`] without skin and a list of
-/// `capacity` entries, parking `K` stored contacts per sphere.
-struct VecBuffers<const K: usize> {
-    entries: Vec<SphereEntry<f64>>,
-    cells: Vec<u32>,
-    list: Vec<ListEntry<SpringDisplacement<f64>>>,
-    parking: Vec<Parking<SpringDisplacement<f64>, K>>,
-}
-
-impl<const K: usize> VecBuffers<K> {
-    fn new(spheres: usize, capacity: usize) -> Self {
-        let sizes = Scene::<Law, NoWalls, K>::buffer_sizes(
-            &open_box(),
-            (DIAMETER, 0.0),
-            spheres,
-            capacity,
-            false,
-        )
-        .unwrap();
-        Self {
-            entries: vec![SphereEntry::default(); sizes.spheres],
-            cells: vec![0; sizes.cells],
-            list: vec![ListEntry::default(); sizes.list],
-            parking: vec![Parking::default(); sizes.parking],
-        }
-    }
-
-    /// A scene over these buffers, run for at most `steps` steps; how many succeeded, whether
-    /// the pair touched in the last, and the error that stopped it.
-    fn run(
-        &mut self,
-        input: &StepInput<'_, Law>,
-        spheres: &mut [CheckedSphere<f64>],
-        steps: usize,
-    ) -> (usize, bool, Option<StepError>) {
-        let buffers = SceneBuffers {
-            spheres: &mut self.entries,
-            cells: &mut self.cells,
-            list: &mut self.list,
-            parking: &mut self.parking,
-            walls: &mut [],
-            pair_results: &mut [],
-        };
-        let mut scene = Scene::new(open_box(), (DIAMETER, 0.0), spheres, buffers, NoWalls).unwrap();
-        let mut touching = false;
-        for done in 0..steps {
-            match scene.step(input) {
-                Ok(stats) => touching = stats.pair_contacts > 0,
-                Err(error) => return (done, touching, Some(error)),
-            }
-        }
-        (steps, touching, None)
-    }
-}
-
 #[test]
 fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
     let law = law();
@@ -693,7 +675,7 @@ fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
     for near in [(0, 1.0), (0, -1.0), (1, 1.0), (1, -1.0)] {
         // A list of one: it holds the pair until the third sphere comes within reach.
         let mut spheres = trio(near);
-        let mut small = VecBuffers::<4>::new(3, 1);
+        let mut small = VecBuffers::<4>::new(3, 1, 0);
         let (steps, touching, error) = small.run(&input, &mut spheres, 500);
         assert_eq!(
             error,
@@ -705,14 +687,14 @@ fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
             "the pair touched (its spring is stored) when the list overflowed"
         );
         // The documented recovery: a larger list over the same history.
-        let mut large = VecBuffers::<4>::new(3, 4);
+        let mut large = VecBuffers::<4>::new(3, 4, 0);
         large.list[..1].copy_from_slice(&small.list);
         let (done, _, error) = large.run(&input, &mut spheres, after);
         assert_eq!((done, error), (after, None));
 
         // A large list from the start, with a new scene at the same step.
         let mut reference = trio(near);
-        let mut b = VecBuffers::<4>::new(3, 4);
+        let mut b = VecBuffers::<4>::new(3, 4, 0);
         assert_eq!(b.run(&input, &mut reference, steps), (steps, true, None));
         assert_eq!(b.run(&input, &mut reference, after).0, after);
         assert_eq!(
@@ -731,18 +713,18 @@ fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
     // Sphere 0 owns both its contacts (the lower index owns a pair): with room to park one,
     // the first rebuild with both springs stored fails.
     let mut spheres = trio((0, 1.0));
-    let mut narrow = VecBuffers::<1>::new(3, 4);
+    let mut narrow = VecBuffers::<1>::new(3, 4, 0);
     let (steps, touching, error) = narrow.run(&input, &mut spheres, 500);
     assert_eq!(error, Some(StepError::ParkingFull));
     assert!(touching);
     // The same list with room to park four.
-    let mut wide = VecBuffers::<4>::new(3, 4);
+    let mut wide = VecBuffers::<4>::new(3, 4, 0);
     wide.list.copy_from_slice(&narrow.list);
     let after = 60;
     assert_eq!(wide.run(&input, &mut spheres, after).0, after);
 
     let mut reference = trio((0, 1.0));
-    let mut b = VecBuffers::<4>::new(3, 4);
+    let mut b = VecBuffers::<4>::new(3, 4, 0);
     assert_eq!(b.run(&input, &mut reference, steps).0, steps);
     assert_eq!(b.run(&input, &mut reference, after).0, after);
     assert_eq!(motion_bits(&spheres), motion_bits(&reference));
@@ -927,7 +909,7 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
     // A negative or non-finite skin.
     for skin in [-1e-4, f64::NAN, f64::INFINITY] {
         let mut spheres = checked_pair();
-        let mut b = PairBuffers::new(0);
+        let mut b = pair_buffers(0);
         let scene = Scene::<Law, _, 4>::new(
             open_box(),
             (DIAMETER, skin),
@@ -957,7 +939,7 @@ fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
     // A wall facing +x, 0.1 mm beyond sphere 0's left side (sphere 1 is far in front of it).
     let left = spheres[0].position.x - spheres[0].radius;
     let wall = Wall::new(Vec3::new(left - 1e-4, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0)).unwrap();
-    let mut b = PairBuffers::new(2);
+    let mut b = pair_buffers(2);
     let mut scene = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
@@ -1161,19 +1143,17 @@ fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     let pool = Threads::new(2).unwrap();
     let mut serial = trio((0, 1.0));
-    VecBuffers::<4>::new(3, 4).run(&input, &mut serial, 80);
+    VecBuffers::<4>::new(3, 4, 0).run(&input, &mut serial, 80);
     let mut threaded = trio((0, 1.0));
-    let mut b = VecBuffers::<4>::new(3, 4);
-    let buffers = SceneBuffers {
-        spheres: &mut b.entries,
-        cells: &mut b.cells,
-        list: &mut b.list,
-        parking: &mut b.parking,
-        walls: &mut [],
-        pair_results: &mut [],
-    };
-    let mut scene =
-        Scene::new(open_box(), (DIAMETER, 0.0), &mut threaded, buffers, NoWalls).unwrap();
+    let mut b = VecBuffers::<4>::new(3, 4, 0);
+    let mut scene = Scene::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut threaded,
+        b.buffers(),
+        NoWalls,
+    )
+    .unwrap();
     let touching = (0..80)
         .map(|_| scene.step_on(&input, &pool).unwrap().pair_contacts)
         .max();
@@ -1251,25 +1231,16 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
         .into_iter()
         .map(|s| CheckedSphere::new(s).unwrap())
         .collect();
-    let sizes =
-        Scene::<Law, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), (DIAMETER, 1e-4), 3, 8, false)
-            .unwrap();
-    let mut entries = vec![SphereEntry::default(); sizes.spheres];
-    let mut cells = vec![0; sizes.cells];
-    let mut list = vec![ListEntry::default(); sizes.list];
-    let mut parking = vec![Parking::default(); sizes.parking];
-    let mut wall_states = vec![WallEntry::default(); sizes.walls];
-    let buffers = SceneBuffers {
-        spheres: &mut entries,
-        cells: &mut cells,
-        list: &mut list,
-        parking: &mut parking,
-        walls: &mut wall_states,
-        pair_results: &mut [],
-    };
-    let mut scene =
-        Scene::<Law, _, 4>::new(open_box(), (DIAMETER, 1e-4), &mut checked, buffers, walls)
-            .unwrap();
+    // Three spheres, two walls: six wall states.
+    let mut b = VecBuffers::<4>::new(3, 8, 6);
+    let mut scene = Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        &mut checked,
+        b.buffers(),
+        walls,
+    )
+    .unwrap();
     for _ in 0..steps {
         scene.step(&input).unwrap();
     }
