@@ -56,9 +56,9 @@ impl_libm!(f64, sqrt, atan2, log);
 ///
 /// `sqrt` and `1/sqrt` are single bit-manipulation guesses (relative error below 6.5 % and
 /// 3.5 %); `atan2` is a rational approximation (below 0.003 rad); `ln` is off by up to 0.12
-/// (the laws take logarithms only when they are built, always through [`Libm`]). The kernel's overlap formula keeps its relative
-/// accuracy with an approximate square root; force magnitudes inherit the `1/sqrt` error through
-/// the contact normal.
+/// (the laws take logarithms only when they are built, always through [`Libm`]). The kernel's
+/// overlap formula keeps its relative accuracy with an approximate square root; force magnitudes
+/// inherit the `1/sqrt` error through the contact normal.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Micromath;
 
