@@ -9,39 +9,19 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use host_tests::random::Xorshift;
-use host_tests::triple::to_vec3;
+use host_tests::pairs::{blocks, touching_pairs};
+use soft_sphere::batch::{ContactBlock, LANES};
 use soft_sphere::{
     CheckedSphere, ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring,
     LinearSpringDashpot, MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel,
-    Rotation, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
+    Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
     effective_mass,
 };
 
 const BATCH: usize = 1024;
 
-/// Touching pairs of 1 mm spheres at overlaps up to 1 % of the radius, random directions,
-/// velocities and spins (fixed seed).
 fn pairs<F: Float>() -> Vec<(Sphere<F>, Sphere<F>)> {
-    let mut random = Xorshift::new(0x9e37_79b9_7f4a_7c15);
-    let mut next = || random.unit() * 2.0 - 1.0;
-    (0..BATCH)
-        .map(|_| {
-            let r = 5e-4;
-            let direction = [next(), next(), next()];
-            let length = (direction.iter().map(|x| x * x).sum::<f64>())
-                .sqrt()
-                .max(1e-3);
-            let distance = 2.0 * r * (1.0 - 0.005 * (1.0 + next()));
-            let f = F::from_f64;
-            let v = |a: [f64; 3], s: f64| to_vec3::<F>(a.map(|x| x * s));
-            let i = Sphere::solid(Vec3::ZERO, f(r), f(2500.0));
-            let mut j = Sphere::solid(v(direction, distance / length), f(r), f(2500.0));
-            j.velocity = v([next(), next(), next()], 0.1);
-            j.angular_velocity = v([next(), next(), next()], 100.0);
-            (i, j)
-        })
-        .collect()
+    touching_pairs(BATCH)
 }
 
 fn bench_law<F: Float, N: NormalModel<F>, T: TangentialModel<F>, M: MathBackend<F>, R: Rotation>(
@@ -240,5 +220,53 @@ fn paths(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, laws, skipping, paths);
+/// The batch path beside the one-contact rows: the same pairs in blocks (gathered beforehand),
+/// `Std` square roots, every lane checked. `N` lanes a block.
+fn bench_blocks<F: Float, T: TangentialModel<F>, const N: usize>(
+    c: &mut Criterion,
+    name: &str,
+    law: ContactLaw<F, LinearSpringDashpot<F>, T, Std>,
+) where
+    Std: MathBackend<F>,
+{
+    let pairs = pairs::<F>();
+    let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
+    let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
+    let gathered = blocks::<F, N>(&pairs);
+    let mut states = vec![[T::State::default(); N]; gathered.len()];
+    let mut group = c.benchmark_group("contact");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            let mut bound = law.at(dt);
+            let mut out = ContactBlock::default();
+            let mut sum = F::ZERO;
+            for (block, states) in gathered.iter().zip(states.iter_mut()) {
+                bound.sphere_pairs(block, states, &mut out);
+                sum += out.normal_force[0];
+            }
+            black_box(sum)
+        });
+    });
+    group.finish();
+}
+
+fn batches(c: &mut Criterion) {
+    let normal = LinearSpringDashpot::new(1000.0f64, 0.9).unwrap();
+    let p = TangentialParameters::new(285.7f64, 0.5, 0.5).unwrap();
+    let aa = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
+    bench_blocks::<_, _, LANES>(c, "batch/model_aa/f64_std", aa);
+    let a = ContactLaw::new(normal, ModelA(p)).with_backend::<Std>();
+    bench_blocks::<_, _, LANES>(c, "batch/model_a/f64_std", a);
+    let model_c = ContactLaw::new(normal, ModelC(p)).with_backend::<Std>();
+    bench_blocks::<_, _, LANES>(c, "batch/model_c/f64_std", model_c);
+    let frictionless = ContactLaw::new(normal, Frictionless).with_backend::<Std>();
+    bench_blocks::<_, _, LANES>(c, "batch/frictionless/f64_std", frictionless);
+    let normal = LinearSpringDashpot::new(1000.0f32, 0.9).unwrap();
+    let p = TangentialParameters::new(285.7f32, 0.5, 0.5).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
+    bench_blocks::<_, _, { 2 * LANES }>(c, "batch/model_aa/f32_std", law);
+}
+
+criterion_group!(benches, laws, skipping, paths, batches);
 criterion_main!(benches);

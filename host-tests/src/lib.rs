@@ -6,6 +6,7 @@ pub mod analytic;
 pub mod data;
 pub mod energy;
 pub mod impact;
+pub mod pairs;
 pub mod plot;
 pub mod precision;
 pub mod random;

@@ -2,7 +2,8 @@
 //!
 //! The backend is a type parameter of the contact law, so two backends can be compared in one
 //! program. [`Libm`] is the default: portable, deterministic across targets, `sqrt` correctly
-//! rounded. [`Micromath`] is micromath's fast bit-level approximations, `f32` only; its error is
+//! rounded. `Std` (the optional `std` feature) takes its square roots from `std`, the same
+//! correctly rounded bits, in a form the compiler can vectorise. [`Micromath`] is micromath's fast bit-level approximations, `f32` only; its error is
 //! large (see [`Micromath`]) and is measured by the host-tests (`tests/backends.rs`), not
 //! assumed.
 
@@ -51,6 +52,50 @@ macro_rules! impl_libm {
 
 impl_libm!(f32, sqrtf, atan2f, logf);
 impl_libm!(f64, sqrt, atan2, log);
+
+/// `std`'s square root (the `sqrt` instruction LLVM knows, so a batch of contacts
+/// ([`crate::batch`]) evaluates its roots in vector registers), with [`Libm`]'s `atan2` and `ln`.
+///
+/// A square root is correctly rounded in IEEE 754 whoever computes it, so `Std` gives the same bits
+/// as [`Libm`] on every target; `atan2` and `ln` are not, and `std`'s come from the platform's C
+/// library, so they stay libm's. `libm`'s own square root is written so that LLVM does not see a
+/// square root it can widen (on x86-64 an inline `sqrtsd`), which keeps a batch scalar. Needs the
+/// `std` feature; the kernel stays `no_std` without it.
+#[cfg(feature = "std")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Std;
+
+macro_rules! impl_std {
+    ($t:ty) => {
+        #[cfg(feature = "std")]
+        impl MathBackend<$t> for Std {
+            #[inline(always)]
+            #[allow(
+                clippy::disallowed_methods,
+                reason = "this backend is std's square root"
+            )]
+            fn sqrt(x: $t) -> $t {
+                <$t>::sqrt(x)
+            }
+            /// As [`Libm`]'s: `sqrt(x) * (1 / x)`, the same bits.
+            #[inline(always)]
+            fn inv_sqrt(x: $t) -> $t {
+                <Self as MathBackend<$t>>::sqrt(x) * (1.0 / x)
+            }
+            #[inline(always)]
+            fn atan2(y: $t, x: $t) -> $t {
+                <Libm as MathBackend<$t>>::atan2(y, x)
+            }
+            #[inline(always)]
+            fn ln(x: $t) -> $t {
+                <Libm as MathBackend<$t>>::ln(x)
+            }
+        }
+    };
+}
+
+impl_std!(f32);
+impl_std!(f64);
 
 /// The `micromath` crate's approximations, used as they are (no refinement step), `f32` only.
 ///

@@ -1,6 +1,7 @@
 //! What an engine calls: any contact law as one type parameter ([`Law`]), bound to its checked
 //! time step ([`BoundLaw`]) and evaluated on checked spheres with no repeated checks.
 
+use crate::batch::{ContactBlock, PairBlock};
 use crate::body::Wall;
 use crate::checked::CheckedSphere;
 use crate::error::{ContactError, ParameterError};
@@ -58,6 +59,13 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// [`SpringDisplacement`](crate::SpringDisplacement) for the stored-spring laws.
     type State: ContactState;
 
+    /// Whether [`BoundLaw::sphere_pairs`] is worth calling instead of one contact at a time: the
+    /// tangential slot vectorises ([`TangentialModel::VECTORISES`](crate::TangentialModel::VECTORISES))
+    /// and the build has 256-bit vectors (AVX, as in `-C target-cpu=x86-64-v3`). With SSE2 alone,
+    /// two `f64` lanes do not pay for computing every lane's whole path: the reference scene ran
+    /// slower in blocks there (README, "Batches"). Either way the bits are the same.
+    const VECTORISES: bool;
+
     /// Checks a time step; see [`ContactLaw::time_step`](crate::ContactLaw::time_step).
     ///
     /// # Errors
@@ -89,6 +97,14 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         j: &CheckedSphere<Self::Float>,
         state: &mut Self::State,
     ) -> Result<Interaction<Self::Float>, ContactError>;
+
+    /// What [`BoundLaw::sphere_pairs`] calls.
+    fn evaluate_pairs<const N: usize>(
+        bound: &mut BoundLaw<'_, Self>,
+        block: &PairBlock<Self::Float, N>,
+        states: &mut [Self::State; N],
+        out: &mut ContactBlock<Self::Float, N>,
+    );
 
     /// What [`BoundLaw::sphere_wall`] calls.
     ///

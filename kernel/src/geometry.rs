@@ -34,6 +34,77 @@ pub(crate) struct ContactFrame<F> {
     pub angular_velocity_j: Vec3<F>,
 }
 
+/// Where two checked spheres stand before any root is taken: the offset from i to j, its squared
+/// length and the sum of the radii. Both the one-contact path and the batch path
+/// ([`crate::batch`]) classify a pair by it, so they agree on where contact begins.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Separation<F> {
+    offset: Vec3<F>,
+    distance_squared: F,
+    reach: F,
+}
+
+impl<F: Float> Separation<F> {
+    #[inline(always)]
+    pub(crate) fn of(i: &Sphere<F>, j: &Sphere<F>) -> Self {
+        let offset = j.position - i.position;
+        Self {
+            offset,
+            distance_squared: offset.norm_squared(),
+            reach: i.radius + j.radius,
+        }
+    }
+
+    /// The centres are too close for a contact normal.
+    #[inline(always)]
+    pub(crate) fn coincident(&self) -> bool {
+        self.distance_squared < F::MIN_POSITIVE
+    }
+
+    /// The spheres do not overlap (an overflowed distance counts as apart).
+    #[inline(always)]
+    pub(crate) fn apart(&self) -> bool {
+        self.distance_squared >= self.reach * self.reach
+    }
+
+    /// The contact frame of an overlapping, non-coincident pair. Branch-free, so a batch can
+    /// compute it for every lane and keep it only where the pair touches.
+    #[inline(always)]
+    pub(crate) fn frame<M: MathBackend<F>>(
+        &self,
+        i: &Sphere<F>,
+        j: &Sphere<F>,
+        lever_arm: LeverArm,
+    ) -> ContactFrame<F> {
+        let (distance_squared, reach) = (self.distance_squared, self.reach);
+        let inverse_distance = M::inv_sqrt(distance_squared);
+        let distance = distance_squared * inverse_distance;
+        // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an
+        // approximate square root, where S - d would cancel.
+        let overlap = (reach * reach - distance_squared) / (reach + distance);
+        let (arm_i, arm_j) = match lever_arm {
+            LeverArm::Radius => (i.radius, j.radius),
+            LeverArm::ContactPlane => {
+                let (ri, rj) = (i.radius * i.radius, j.radius * j.radius);
+                let half_inverse = F::HALF * inverse_distance;
+                (
+                    ((distance_squared + ri - rj) * half_inverse).max_of(F::ZERO),
+                    ((distance_squared + rj - ri) * half_inverse).max_of(F::ZERO),
+                )
+            }
+        };
+        ContactFrame {
+            normal: self.offset * inverse_distance,
+            overlap,
+            arm_i,
+            arm_j,
+            velocity: j.velocity - i.velocity,
+            angular_velocity_i: i.angular_velocity,
+            angular_velocity_j: j.angular_velocity,
+        }
+    }
+}
+
 /// The contact between checked spheres i and j (see [`crate::checked::check`]), `None` when they
 /// do not overlap; only the coincident-centre test remains to be made.
 #[inline(always)]
@@ -42,40 +113,14 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
     j: &Sphere<F>,
     lever_arm: LeverArm,
 ) -> Result<Option<ContactFrame<F>>, ContactError> {
-    let offset = j.position - i.position;
-    let distance_squared = offset.norm_squared();
-    if distance_squared < F::MIN_POSITIVE {
+    let separation = Separation::of(i, j);
+    if separation.coincident() {
         return Err(ContactError::CoincidentCentres);
     }
-    let reach = i.radius + j.radius;
-    if distance_squared >= reach * reach {
+    if separation.apart() {
         return Ok(None);
     }
-    let inverse_distance = M::inv_sqrt(distance_squared);
-    let distance = distance_squared * inverse_distance;
-    // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an approximate
-    // square root, where S - d would cancel.
-    let overlap = (reach * reach - distance_squared) / (reach + distance);
-    let (arm_i, arm_j) = match lever_arm {
-        LeverArm::Radius => (i.radius, j.radius),
-        LeverArm::ContactPlane => {
-            let (ri, rj) = (i.radius * i.radius, j.radius * j.radius);
-            let half_inverse = F::HALF * inverse_distance;
-            (
-                ((distance_squared + ri - rj) * half_inverse).max_of(F::ZERO),
-                ((distance_squared + rj - ri) * half_inverse).max_of(F::ZERO),
-            )
-        }
-    };
-    Ok(Some(ContactFrame {
-        normal: offset * inverse_distance,
-        overlap,
-        arm_i,
-        arm_j,
-        velocity: j.velocity - i.velocity,
-        angular_velocity_i: i.angular_velocity,
-        angular_velocity_j: j.angular_velocity,
-    }))
+    Ok(Some(separation.frame::<M>(i, j, lever_arm)))
 }
 
 /// The contact between a checked sphere (body i) and a wall (body j), `None` when they do not

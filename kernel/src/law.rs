@@ -3,6 +3,7 @@
 use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
+use crate::batch::{self, ContactBlock, PairBlock};
 use crate::body::{Sphere, Wall, effective_mass};
 use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law, sealed};
@@ -97,7 +98,7 @@ impl<F: Float> ContactForces<F> {
     }
 
     #[inline(always)]
-    fn is_finite(&self) -> bool {
+    pub(crate) fn is_finite(&self) -> bool {
         let (t, s, a, b) = (
             self.tangential_force,
             self.slip_velocity,
@@ -355,6 +356,26 @@ where
         state: &mut T::State,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
+        let (forces, next_state) = self.touching(&frame, oscillator, state, time_step);
+        if !(forces.is_finite() && next_state.is_finite()) {
+            return Err(ContactError::NonFiniteResult);
+        }
+        *state = next_state;
+        Ok(Interaction::Touching(forces))
+    }
+
+    /// The forces of a touching contact and the state to keep, not yet checked for finiteness.
+    /// Straight-line code apart from what the slots branch on, so the batch path
+    /// ([`crate::batch`]) runs it for every lane and keeps it where the lane touches: one
+    /// computation for both paths, the same bits.
+    #[inline(always)]
+    pub(crate) fn touching(
+        &self,
+        frame: &ContactFrame<F>,
+        oscillator: &NormalOscillator<F>,
+        state: &T::State,
+        time_step: TimeStep<F>,
+    ) -> (ContactForces<F>, T::State) {
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
         let normal_force = self
@@ -399,11 +420,7 @@ where
                 forces.torque_on_j = moment * -frame.arm_j;
             }
         }
-        if !(forces.is_finite() && next_state.is_finite()) {
-            return Err(ContactError::NonFiniteResult);
-        }
-        *state = next_state;
-        Ok(Interaction::Touching(forces))
+        (forces, next_state)
     }
 }
 
@@ -419,6 +436,7 @@ where
 {
     type Float = F;
     type State = T::State;
+    const VECTORISES: bool = T::VECTORISES && cfg!(target_feature = "avx");
 
     fn time_step(
         &self,
@@ -453,6 +471,16 @@ where
             })
         };
         law.interaction(frame, oscillator, state, time_step)
+    }
+
+    #[inline(always)]
+    fn evaluate_pairs<const LANES: usize>(
+        bound: &mut BoundLaw<'_, Self>,
+        block: &PairBlock<F, LANES>,
+        states: &mut [T::State; LANES],
+        out: &mut ContactBlock<F, LANES>,
+    ) {
+        batch::sphere_pairs(bound, block, states, out);
     }
 
     #[inline(always)]

@@ -137,7 +137,11 @@
 #![deny(missing_docs)]
 #![deny(clippy::disallowed_methods)]
 
+#[cfg(feature = "std")]
+extern crate std;
+
 mod backend;
+pub mod batch;
 mod body;
 mod checked;
 mod engine;
@@ -153,6 +157,8 @@ pub mod tangential;
 mod time_step;
 mod vector;
 
+#[cfg(feature = "std")]
+pub use backend::Std;
 pub use backend::{Libm, MathBackend, Micromath};
 pub use body::{Sphere, Wall, effective_mass};
 pub use checked::CheckedSphere;

@@ -317,6 +317,139 @@ typedef struct {
 } ss_wall_f64;
 
 /**
+ * Spheres as arrays, one pointer per field (structure of arrays): sphere `k` is element `k` of
+ * every array. Every pointer must be valid for the call's `count` elements.
+ */
+typedef struct {
+  /**
+   * Centre x (m).
+   */
+  const double *position_x;
+  /**
+   * Centre y (m).
+   */
+  const double *position_y;
+  /**
+   * Centre z (m).
+   */
+  const double *position_z;
+  /**
+   * Velocity x (m/s).
+   */
+  const double *velocity_x;
+  /**
+   * Velocity y (m/s).
+   */
+  const double *velocity_y;
+  /**
+   * Velocity z (m/s).
+   */
+  const double *velocity_z;
+  /**
+   * Angular velocity x (rad/s).
+   */
+  const double *angular_velocity_x;
+  /**
+   * Angular velocity y (rad/s).
+   */
+  const double *angular_velocity_y;
+  /**
+   * Angular velocity z (rad/s).
+   */
+  const double *angular_velocity_z;
+  /**
+   * Radius (m).
+   */
+  const double *radius;
+  /**
+   * Mass (kg).
+   */
+  const double *mass;
+} ss_sphere_arrays_f64;
+
+/**
+ * Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
+ * `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+ */
+typedef struct {
+  /**
+   * Displacement x.
+   */
+  double *displacement_x;
+  /**
+   * Displacement y.
+   */
+  double *displacement_y;
+  /**
+   * Displacement z.
+   */
+  double *displacement_z;
+} ss_state_arrays_f64;
+
+/**
+ * What a batch call writes, as arrays: element `k` of each holds what `ss_forces_*` holds for
+ * pair `k`, and `status[k]` that pair's code (`SS_OK` or the error the single call gives).
+ */
+typedef struct {
+  /**
+   * Each pair's code: `SS_OK`, or the error code of `ss_bound_sphere_sphere_*` for it.
+   */
+  int32_t *status;
+  /**
+   * 1 when touching, 0 when apart.
+   */
+  int32_t *touching;
+  /**
+   * 1 when the contact slid.
+   */
+  int32_t *sliding;
+  /**
+   * Overlap (m).
+   */
+  double *overlap;
+  /**
+   * Normal force (N).
+   */
+  double *normal_force;
+  /**
+   * Force on j, x (N).
+   */
+  double *force_on_j_x;
+  /**
+   * Force on j, y (N).
+   */
+  double *force_on_j_y;
+  /**
+   * Force on j, z (N).
+   */
+  double *force_on_j_z;
+  /**
+   * Torque on i, x (N m).
+   */
+  double *torque_on_i_x;
+  /**
+   * Torque on i, y (N m).
+   */
+  double *torque_on_i_y;
+  /**
+   * Torque on i, z (N m).
+   */
+  double *torque_on_i_z;
+  /**
+   * Torque on j, x (N m).
+   */
+  double *torque_on_j_x;
+  /**
+   * Torque on j, y (N m).
+   */
+  double *torque_on_j_y;
+  /**
+   * Torque on j, z (N m).
+   */
+  double *torque_on_j_z;
+} ss_forces_arrays_f64;
+
+/**
  * Law parameters, validated once by the constructor.
  */
 typedef struct {
@@ -462,6 +595,139 @@ typedef struct {
   ss_vec3_f32 velocity;
 } ss_wall_f32;
 
+/**
+ * Spheres as arrays, one pointer per field (structure of arrays): sphere `k` is element `k` of
+ * every array. Every pointer must be valid for the call's `count` elements.
+ */
+typedef struct {
+  /**
+   * Centre x (m).
+   */
+  const float *position_x;
+  /**
+   * Centre y (m).
+   */
+  const float *position_y;
+  /**
+   * Centre z (m).
+   */
+  const float *position_z;
+  /**
+   * Velocity x (m/s).
+   */
+  const float *velocity_x;
+  /**
+   * Velocity y (m/s).
+   */
+  const float *velocity_y;
+  /**
+   * Velocity z (m/s).
+   */
+  const float *velocity_z;
+  /**
+   * Angular velocity x (rad/s).
+   */
+  const float *angular_velocity_x;
+  /**
+   * Angular velocity y (rad/s).
+   */
+  const float *angular_velocity_y;
+  /**
+   * Angular velocity z (rad/s).
+   */
+  const float *angular_velocity_z;
+  /**
+   * Radius (m).
+   */
+  const float *radius;
+  /**
+   * Mass (kg).
+   */
+  const float *mass;
+} ss_sphere_arrays_f32;
+
+/**
+ * Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
+ * `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+ */
+typedef struct {
+  /**
+   * Displacement x.
+   */
+  float *displacement_x;
+  /**
+   * Displacement y.
+   */
+  float *displacement_y;
+  /**
+   * Displacement z.
+   */
+  float *displacement_z;
+} ss_state_arrays_f32;
+
+/**
+ * What a batch call writes, as arrays: element `k` of each holds what `ss_forces_*` holds for
+ * pair `k`, and `status[k]` that pair's code (`SS_OK` or the error the single call gives).
+ */
+typedef struct {
+  /**
+   * Each pair's code: `SS_OK`, or the error code of `ss_bound_sphere_sphere_*` for it.
+   */
+  int32_t *status;
+  /**
+   * 1 when touching, 0 when apart.
+   */
+  int32_t *touching;
+  /**
+   * 1 when the contact slid.
+   */
+  int32_t *sliding;
+  /**
+   * Overlap (m).
+   */
+  float *overlap;
+  /**
+   * Normal force (N).
+   */
+  float *normal_force;
+  /**
+   * Force on j, x (N).
+   */
+  float *force_on_j_x;
+  /**
+   * Force on j, y (N).
+   */
+  float *force_on_j_y;
+  /**
+   * Force on j, z (N).
+   */
+  float *force_on_j_z;
+  /**
+   * Torque on i, x (N m).
+   */
+  float *torque_on_i_x;
+  /**
+   * Torque on i, y (N m).
+   */
+  float *torque_on_i_y;
+  /**
+   * Torque on i, z (N m).
+   */
+  float *torque_on_i_z;
+  /**
+   * Torque on j, x (N m).
+   */
+  float *torque_on_j_x;
+  /**
+   * Torque on j, y (N m).
+   */
+  float *torque_on_j_y;
+  /**
+   * Torque on j, z (N m).
+   */
+  float *torque_on_j_z;
+} ss_forces_arrays_f32;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -553,6 +819,26 @@ int32_t ss_bound_sphere_wall_f64(ss_bound_law_f64 *bound,
                                  const ss_wall_f64 *wall,
                                  ss_state_f64 *state,
                                  ss_forces_f64 *out);
+
+/**
+ * `count` sphere-sphere evaluations in one call, pair `k` being element `k` of the arrays
+ * of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
+ * state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
+ * pair's state and outputs are left as they were. The kernel evaluates the pairs in
+ * vector-width blocks (build for your CPU to use its vectors: README, "Batches").
+ * Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
+ * for the stateless and frictionless laws), before touching anything; else `SS_OK`.
+ *
+ * # Safety
+ * Every array must be valid for `count` elements; the written arrays (`*out`'s and the
+ * states) must not overlap each other or the inputs. One thread at a time per handle.
+ */
+int32_t ss_bound_sphere_pairs_f64(ss_bound_law_f64 *bound,
+                                  size_t count,
+                                  const ss_sphere_arrays_f64 *i,
+                                  const ss_sphere_arrays_f64 *j,
+                                  const ss_state_arrays_f64 *states,
+                                  const ss_forces_arrays_f64 *out);
 
 /**
  * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
@@ -682,6 +968,26 @@ int32_t ss_bound_sphere_wall_f32(ss_bound_law_f32 *bound,
                                  const ss_wall_f32 *wall,
                                  ss_state_f32 *state,
                                  ss_forces_f32 *out);
+
+/**
+ * `count` sphere-sphere evaluations in one call, pair `k` being element `k` of the arrays
+ * of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
+ * state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
+ * pair's state and outputs are left as they were. The kernel evaluates the pairs in
+ * vector-width blocks (build for your CPU to use its vectors: README, "Batches").
+ * Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
+ * for the stateless and frictionless laws), before touching anything; else `SS_OK`.
+ *
+ * # Safety
+ * Every array must be valid for `count` elements; the written arrays (`*out`'s and the
+ * states) must not overlap each other or the inputs. One thread at a time per handle.
+ */
+int32_t ss_bound_sphere_pairs_f32(ss_bound_law_f32 *bound,
+                                  size_t count,
+                                  const ss_sphere_arrays_f32 *i,
+                                  const ss_sphere_arrays_f32 *j,
+                                  const ss_state_arrays_f32 *states,
+                                  const ss_forces_arrays_f32 *out);
 
 /**
  * Advances a homogeneous solid sphere by the law's step with the kernel's symplectic

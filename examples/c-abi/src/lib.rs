@@ -18,11 +18,13 @@
 
 #![allow(non_camel_case_types)] // C names: ss_law_f64, ss_sphere_f32, ...
 
+use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless,
-    Interaction, LinearSpringDashpot, ModelAA, ModelAALuding, Parameter, ParameterError, Sphere,
-    SpringDisplacement, Stateless, TangentialParameters, TimeStep, Vec3, Wall,
+    Interaction, Law, LinearSpringDashpot, MathBackend, ModelAA, ModelAALuding, Parameter,
+    ParameterError, Sphere, SpringDisplacement, Stateless, Std, TangentialParameters, TimeStep,
+    Vec3, Wall,
 };
 
 /// Success.
@@ -671,6 +673,337 @@ unsafe fn bound_wall<F: Float>(
     }))
 }
 
+/// Spheres as arrays, one pointer per field (structure of arrays): sphere `k` is element `k` of
+/// every array. Every pointer must be valid for the call's `count` elements.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_sphere_arrays<F> {
+    /// Centre x (m).
+    pub position_x: *const F,
+    /// Centre y (m).
+    pub position_y: *const F,
+    /// Centre z (m).
+    pub position_z: *const F,
+    /// Velocity x (m/s).
+    pub velocity_x: *const F,
+    /// Velocity y (m/s).
+    pub velocity_y: *const F,
+    /// Velocity z (m/s).
+    pub velocity_z: *const F,
+    /// Angular velocity x (rad/s).
+    pub angular_velocity_x: *const F,
+    /// Angular velocity y (rad/s).
+    pub angular_velocity_y: *const F,
+    /// Angular velocity z (rad/s).
+    pub angular_velocity_z: *const F,
+    /// Radius (m).
+    pub radius: *const F,
+    /// Mass (kg).
+    pub mass: *const F,
+}
+
+/// Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
+/// `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_state_arrays<F> {
+    /// Displacement x.
+    pub displacement_x: *mut F,
+    /// Displacement y.
+    pub displacement_y: *mut F,
+    /// Displacement z.
+    pub displacement_z: *mut F,
+}
+
+/// What a batch call writes, as arrays: element `k` of each holds what `ss_forces_*` holds for
+/// pair `k`, and `status[k]` that pair's code (`SS_OK` or the error the single call gives).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_forces_arrays<F> {
+    /// Each pair's code: `SS_OK`, or the error code of `ss_bound_sphere_sphere_*` for it.
+    pub status: *mut i32,
+    /// 1 when touching, 0 when apart.
+    pub touching: *mut i32,
+    /// 1 when the contact slid.
+    pub sliding: *mut i32,
+    /// Overlap (m).
+    pub overlap: *mut F,
+    /// Normal force (N).
+    pub normal_force: *mut F,
+    /// Force on j, x (N).
+    pub force_on_j_x: *mut F,
+    /// Force on j, y (N).
+    pub force_on_j_y: *mut F,
+    /// Force on j, z (N).
+    pub force_on_j_z: *mut F,
+    /// Torque on i, x (N m).
+    pub torque_on_i_x: *mut F,
+    /// Torque on i, y (N m).
+    pub torque_on_i_y: *mut F,
+    /// Torque on i, z (N m).
+    pub torque_on_i_z: *mut F,
+    /// Torque on j, x (N m).
+    pub torque_on_j_x: *mut F,
+    /// Torque on j, y (N m).
+    pub torque_on_j_y: *mut F,
+    /// Torque on j, z (N m).
+    pub torque_on_j_z: *mut F,
+}
+
+/// `count` elements at `pointer`, or `None` for null.
+///
+/// # Safety
+/// A non-null pointer must be valid for `count` reads.
+unsafe fn read<'a, F>(pointer: *const F, count: usize) -> Option<&'a [F]> {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    (!pointer.is_null()).then(|| unsafe { core::slice::from_raw_parts(pointer, count) })
+}
+
+/// `count` elements at `pointer` to write, or `None` for null.
+///
+/// # Safety
+/// A non-null pointer must be valid for `count` writes and overlap nothing else of the call.
+unsafe fn write<'a, F>(pointer: *mut F, count: usize) -> Option<&'a mut [F]> {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    (!pointer.is_null()).then(|| unsafe { core::slice::from_raw_parts_mut(pointer, count) })
+}
+
+/// The spheres' arrays as slices, or `None` if one is null.
+///
+/// # Safety
+/// As [`read`], for every field.
+unsafe fn sphere_slices<'a, F>(s: &ss_sphere_arrays<F>, count: usize) -> Option<[&'a [F]; 11]> {
+    let fields = [
+        s.position_x,
+        s.position_y,
+        s.position_z,
+        s.velocity_x,
+        s.velocity_y,
+        s.velocity_z,
+        s.angular_velocity_x,
+        s.angular_velocity_y,
+        s.angular_velocity_z,
+        s.radius,
+        s.mass,
+    ];
+    let mut slices = [&[][..]; 11];
+    for (slice, pointer) in slices.iter_mut().zip(fields) {
+        // SAFETY: forwarded contract.
+        *slice = unsafe { read(pointer, count) }?;
+    }
+    Some(slices)
+}
+
+/// The eleven field arrays of [`ss_sphere_arrays`], in its order.
+type SphereSlices<'a, F> = [&'a [F]; 11];
+
+/// Sphere `k` of the arrays.
+#[inline(always)]
+fn sphere_at<F: Float>(s: &[&[F]; 11], k: usize) -> Sphere<F> {
+    Sphere {
+        position: Vec3::new(s[0][k], s[1][k], s[2][k]),
+        velocity: Vec3::new(s[3][k], s[4][k], s[5][k]),
+        angular_velocity: Vec3::new(s[6][k], s[7][k], s[8][k]),
+        radius: s[9][k],
+        mass: s[10][k],
+    }
+}
+
+/// A batch call's outputs, as slices.
+struct Outputs<'a, F> {
+    status: &'a mut [i32],
+    flags: [&'a mut [i32]; 2],
+    reals: [&'a mut [F]; 11],
+}
+
+impl<'a, F: Float> Outputs<'a, F> {
+    /// The arrays of `*out`, or `None` if one is null.
+    ///
+    /// # Safety
+    /// As [`write`], for every field.
+    unsafe fn of(out: &ss_forces_arrays<F>, count: usize) -> Option<Self> {
+        let reals = [
+            out.overlap,
+            out.normal_force,
+            out.force_on_j_x,
+            out.force_on_j_y,
+            out.force_on_j_z,
+            out.torque_on_i_x,
+            out.torque_on_i_y,
+            out.torque_on_i_z,
+            out.torque_on_j_x,
+            out.torque_on_j_y,
+            out.torque_on_j_z,
+        ];
+        // SAFETY (all three): forwarded contract.
+        let [Some(a), Some(b)] = [out.touching, out.sliding].map(|p| unsafe { write(p, count) })
+        else {
+            return None;
+        };
+        let reals = reals.map(|p| unsafe { write(p, count) });
+        if reals.iter().any(Option::is_none) {
+            return None;
+        }
+        Some(Self {
+            status: unsafe { write(out.status, count) }?,
+            flags: [a, b],
+            reals: reals.map(Option::unwrap_or_default),
+        })
+    }
+
+    /// Pair `k`'s result: its forces on success, only its code on error.
+    #[inline(always)]
+    fn set(&mut self, k: usize, result: Result<Interaction<F>, ContactError>) {
+        match result {
+            Ok(interaction) => {
+                let f = forces_of(interaction);
+                let values = [
+                    f.overlap,
+                    f.normal_force,
+                    f.force_on_j.x,
+                    f.force_on_j.y,
+                    f.force_on_j.z,
+                    f.torque_on_i.x,
+                    f.torque_on_i.y,
+                    f.torque_on_i.z,
+                    f.torque_on_j.x,
+                    f.torque_on_j.y,
+                    f.torque_on_j.z,
+                ];
+                for (array, value) in self.reals.iter_mut().zip(values) {
+                    array[k] = value;
+                }
+                self.flags[0][k] = f.touching;
+                self.flags[1][k] = f.sliding;
+                self.status[k] = SS_OK;
+            }
+            Err(e) => self.status[k] = contact_code(e),
+        }
+    }
+}
+
+/// A batch call's states, as slices (`None` where the law stores nothing and the caller gave
+/// null).
+struct States<'a, F>(Option<[&'a mut [F]; 3]>);
+
+impl<F: Float> States<'_, F> {
+    #[inline(always)]
+    fn load<S: Stored<F>>(&self, k: usize) -> S {
+        let displacement = match &self.0 {
+            Some([x, y, z]) => ss_vec3 {
+                x: x[k],
+                y: y[k],
+                z: z[k],
+            },
+            None => ss_vec3::default(),
+        };
+        S::load(&ss_state { displacement })
+    }
+
+    #[inline(always)]
+    fn store<S: Stored<F>>(&mut self, k: usize, state: &S) {
+        if let Some([x, y, z]) = &mut self.0 {
+            let mut out = ss_state::default();
+            state.store(&mut out);
+            (x[k], y[k], z[k]) = (out.displacement.x, out.displacement.y, out.displacement.z);
+        }
+    }
+}
+
+/// The pairs in blocks of [`LANES`] through the kernel's batch path (`Std` square roots: the
+/// same bits as the single calls'), each pair's state and result written back in order.
+#[inline(always)]
+fn in_blocks<L: Law>(
+    bound: &mut BoundLaw<'_, L>,
+    (i, j): (&SphereSlices<'_, L::Float>, &SphereSlices<'_, L::Float>),
+    states: &mut States<'_, L::Float>,
+    out: &mut Outputs<'_, L::Float>,
+) where
+    L::State: Stored<L::Float>,
+{
+    let count = out.status.len();
+    let mut block = PairBlock::<L::Float, LANES>::default();
+    let mut results = ContactBlock::default();
+    for first in (0..count).step_by(LANES) {
+        let lanes = LANES.min(count - first);
+        let mut lane_states = [L::State::default(); LANES];
+        for (lane, state) in lane_states.iter_mut().enumerate() {
+            // Unused lanes repeat the last pair and are ignored.
+            let k = first + lane.min(lanes - 1);
+            block.set(lane, &sphere_at(i, k), &sphere_at(j, k));
+            *state = states.load(k);
+        }
+        bound.sphere_pairs(&block, &mut lane_states, &mut results);
+        for (lane, state) in lane_states.iter().enumerate().take(lanes) {
+            let result = results.outcome(lane);
+            if result.is_ok() {
+                states.store(first + lane, state);
+            }
+            out.set(first + lane, result);
+        }
+    }
+}
+
+/// # Safety
+/// As the exported batch calls.
+unsafe fn bound_pairs<F: Float>(
+    bound: *mut ss_bound_law<F>,
+    count: usize,
+    i: *const ss_sphere_arrays<F>,
+    j: *const ss_sphere_arrays<F>,
+    states: *const ss_state_arrays<F>,
+    out: *const ss_forces_arrays<F>,
+) -> i32
+where
+    Std: MathBackend<F>,
+{
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(bound), Some(i), Some(j), Some(states), Some(out)) = (unsafe {
+        (
+            bound.as_mut(),
+            i.as_ref(),
+            j.as_ref(),
+            states.as_ref(),
+            out.as_ref(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    // SAFETY (all below): the caller promises each array valid for `count` elements and the
+    // written ones disjoint from each other and from the inputs.
+    let (Some(i), Some(j), Some(mut out)) = (unsafe {
+        (
+            sphere_slices(i, count),
+            sphere_slices(j, count),
+            Outputs::of(out, count),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let displacement = [
+        states.displacement_x,
+        states.displacement_y,
+        states.displacement_z,
+    ]
+    .map(|p| unsafe { write(p, count) });
+    let mut states = match displacement {
+        [Some(x), Some(y), Some(z)] => States(Some([x, y, z])),
+        _ => States(None),
+    };
+    let stores = matches!(
+        bound.bound,
+        AnyBound::ModelAA(_) | AnyBound::ModelAALuding(_)
+    );
+    if stores && states.0.is_none() {
+        return SS_ERR_NULL;
+    }
+    each_law!(&bound.bound, AnyBound, b => {
+        let law = b.law().with_backend::<Std>();
+        in_blocks(&mut law.at(b.time_step()), (&i, &j), &mut states, &mut out)
+    });
+    SS_OK
+}
+
 /// # Safety
 /// As the exported advance calls.
 unsafe fn advance<F: Float>(
@@ -743,7 +1076,7 @@ unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -862,6 +1195,30 @@ macro_rules! entry_points {
             unsafe { bound_wall(bound, sphere, wall, state, out) }
         }
 
+        /// `count` sphere-sphere evaluations in one call, pair `k` being element `k` of the arrays
+        /// of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
+        /// state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
+        /// pair's state and outputs are left as they were. The kernel evaluates the pairs in
+        /// vector-width blocks (build for your CPU to use its vectors: README, "Batches").
+        /// Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
+        /// for the stateless and frictionless laws), before touching anything; else `SS_OK`.
+        ///
+        /// # Safety
+        /// Every array must be valid for `count` elements; the written arrays (`*out`'s and the
+        /// states) must not overlap each other or the inputs. One thread at a time per handle.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $bound_sphere_pairs(
+            bound: *mut ss_bound_law<$real>,
+            count: usize,
+            i: *const ss_sphere_arrays<$real>,
+            j: *const ss_sphere_arrays<$real>,
+            states: *const ss_state_arrays<$real>,
+            out: *const ss_forces_arrays<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { bound_pairs(bound, count, i, j, states, out) }
+        }
+
         /// Advances a homogeneous solid sphere by the law's step with the kernel's symplectic
         /// Euler (`motion::advance_solid_sphere`), for hosts that want the identical arithmetic.
         ///
@@ -919,5 +1276,5 @@ macro_rules! entry_points {
     };
 }
 
-entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
-entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);
+entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_bound_sphere_pairs_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
+entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_bound_sphere_pairs_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);

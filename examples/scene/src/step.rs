@@ -4,6 +4,7 @@
 
 use core::array;
 
+use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
 use soft_sphere::motion::Kick;
 use soft_sphere::{BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, Vec3};
 
@@ -46,6 +47,9 @@ impl<F: Float> KickMemo<F> {
     }
 }
 
+/// A block of the kernel's batch path and its results, reused from block to block.
+type LaneBlock<F> = (PairBlock<F, LANES>, ContactBlock<F, LANES>);
+
 /// The spheres and the grid a contact is evaluated with.
 struct PairContext<'c, F> {
     spheres: &'c [CheckedSphere<F>],
@@ -80,17 +84,7 @@ impl<F: Float> PairContext<'_, F> {
     ) -> Result<PairResult<F>, ContactError> {
         let sphere_i = &self.spheres[i as usize];
         let partner = self.spheres[j as usize].translated(self.grid.image_shift(image))?;
-        Ok(match law.sphere_sphere(sphere_i, &partner, state)? {
-            Interaction::Touching(c) => PairResult {
-                force_on_j: c.force_on_j(),
-                torque_on_i: c.torque_on_i,
-                torque_on_j: c.torque_on_j,
-                overlap: c.overlap,
-                touching: true,
-                sliding: c.sliding,
-            },
-            Interaction::Apart => PairResult::default(),
-        })
+        Ok(pair_result(law.sphere_sphere(sphere_i, &partner, state)?))
     }
 
     /// The contacts of a stretch of the list: each pair's next state into the entry's other
@@ -105,6 +99,7 @@ impl<F: Float> PairContext<'_, F> {
         let next = 1 - live;
         let mut law = law.at(time_step);
         let mut touching = [0u32; SIFT_BLOCK];
+        let mut lane_block = (PairBlock::default(), ContactBlock::default());
         for (b, block) in entries.chunks_mut(SIFT_BLOCK).enumerate() {
             let first = b * SIFT_BLOCK;
             if stores::<L::State>() {
@@ -114,15 +109,76 @@ impl<F: Float> PairContext<'_, F> {
                 }
             }
             let found = self.sift(block, &mut touching);
-            for &k in &touching[..found] {
-                let entry = &mut block[k as usize];
-                let mut state = entry.states[live];
-                let result = self.contact(entry.candidate, &mut law, &mut state)?;
-                entry.states[next] = state;
-                add(first + k as usize, entry.candidate, result);
+            if L::VECTORISES {
+                for lanes in touching[..found].chunks(LANES) {
+                    self.contacts(
+                        lanes,
+                        block,
+                        live,
+                        (&mut law, &mut lane_block),
+                        |k, c, r| add(first + k, c, r),
+                    )?;
+                }
+            } else {
+                for &k in &touching[..found] {
+                    let entry = &mut block[k as usize];
+                    let mut state = entry.states[live];
+                    let result = self.contact(entry.candidate, &mut law, &mut state)?;
+                    entry.states[next] = state;
+                    add(first + k as usize, entry.candidate, result);
+                }
             }
         }
         Ok(())
+    }
+
+    /// Up to [`LANES`] sifted pairs (`lanes`, positions in `block`) as one block of the kernel's
+    /// batch path: gathered once, evaluated together, then taken lane by lane in list order, so
+    /// the first failing pair's error is the one returned, as one at a time. Unused lanes repeat
+    /// the last pair and are ignored.
+    #[inline(always)]
+    fn contacts<L: Law<Float = F>>(
+        &self,
+        lanes: &[u32],
+        block: &mut [ListEntry<L::State>],
+        live: usize,
+        (law, (pairs, out)): (&mut BoundLaw<'_, L>, &mut LaneBlock<F>),
+        mut add: impl FnMut(usize, Candidate, PairResult<F>),
+    ) -> Result<(), ContactError> {
+        let mut states = [L::State::default(); LANES];
+        for lane in 0..LANES {
+            let entry = &block[lanes[lane.min(lanes.len() - 1)] as usize];
+            let Candidate { i, j, image } = entry.candidate;
+            let mut partner: soft_sphere::Sphere<F> = *self.spheres[j as usize];
+            // As `CheckedSphere::translated`; a position it would refuse fails the lane's check.
+            partner.position += self.grid.image_shift(image);
+            pairs.set(lane, &self.spheres[i as usize], &partner);
+            states[lane] = entry.states[live];
+        }
+        law.sphere_pairs(pairs, &mut states, out);
+        for (lane, &k) in lanes.iter().enumerate() {
+            let entry = &mut block[k as usize];
+            let result = pair_result(out.outcome(lane)?);
+            entry.states[1 - live] = states[lane];
+            add(k as usize, entry.candidate, result);
+        }
+        Ok(())
+    }
+}
+
+/// What the scene keeps of one pair's outcome.
+#[inline(always)]
+fn pair_result<F: Float>(interaction: Interaction<F>) -> PairResult<F> {
+    match interaction {
+        Interaction::Touching(c) => PairResult {
+            force_on_j: c.force_on_j(),
+            torque_on_i: c.torque_on_i,
+            torque_on_j: c.torque_on_j,
+            overlap: c.overlap,
+            touching: true,
+            sliding: c.sliding,
+        },
+        Interaction::Apart => PairResult::default(),
     }
 }
 

@@ -19,7 +19,7 @@ use host_tests::scene::{
     write_lammps_data,
 };
 use soft_sphere::{
-    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, ModelAA, Sphere,
+    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, ModelAA, Sphere, Std,
     TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
@@ -270,8 +270,8 @@ fn main() -> Result<(), Box<dyn Error>> {
             &spheres,
             height,
             (
-                ContactLaw::new(normal, ModelAA(tangential())),
-                ContactLaw::new(wall_normal, ModelAA(tangential())),
+                ContactLaw::new(normal, ModelAA(tangential())).with_backend::<Std>(),
+                ContactLaw::new(wall_normal, ModelAA(tangential())).with_backend::<Std>(),
             ),
             &floor(),
         )?,
@@ -280,8 +280,12 @@ fn main() -> Result<(), Box<dyn Error>> {
             &spheres,
             height,
             (
-                ContactLaw::new(normal, Frictionless).without_rotation(),
-                ContactLaw::new(wall_normal, Frictionless).without_rotation(),
+                ContactLaw::new(normal, Frictionless)
+                    .with_backend::<Std>()
+                    .without_rotation(),
+                ContactLaw::new(wall_normal, Frictionless)
+                    .with_backend::<Std>()
+                    .without_rotation(),
             ),
             &floor(),
         )?,
@@ -290,8 +294,12 @@ fn main() -> Result<(), Box<dyn Error>> {
             &spheres,
             height,
             (
-                ContactLaw::new(normal, ModelAA(tangential())).without_rotation(),
-                ContactLaw::new(wall_normal, ModelAA(tangential())).without_rotation(),
+                ContactLaw::new(normal, ModelAA(tangential()))
+                    .with_backend::<Std>()
+                    .without_rotation(),
+                ContactLaw::new(wall_normal, ModelAA(tangential()))
+                    .with_backend::<Std>()
+                    .without_rotation(),
             ),
             &floor(),
         )?,
@@ -303,8 +311,8 @@ fn main() -> Result<(), Box<dyn Error>> {
                 &spheres,
                 height,
                 (
-                    ContactLaw::new(spring, ModelAA(t)),
-                    ContactLaw::new(spring, ModelAA(t)),
+                    ContactLaw::new(spring, ModelAA(t)).with_backend::<Std>(),
+                    ContactLaw::new(spring, ModelAA(t)).with_backend::<Std>(),
                 ),
                 &floor(),
             )?
@@ -314,8 +322,8 @@ fn main() -> Result<(), Box<dyn Error>> {
             &spheres,
             height,
             (
-                ContactLaw::new(normal, ModelAA(tangential())),
-                ContactLaw::new(wall_normal, ModelAA(tangential())),
+                ContactLaw::new(normal, ModelAA(tangential())).with_backend::<Std>(),
+                ContactLaw::new(wall_normal, ModelAA(tangential())).with_backend::<Std>(),
             ),
             &NoWalls,
         )?,

@@ -55,6 +55,7 @@ pub fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
 
 impl<F: Float> TangentialModel<F> for Stateless<F> {
     type State = ();
+    const VECTORISES: bool = false;
 
     #[inline(always)]
     fn force<M: MathBackend<F>>(
