@@ -3,7 +3,10 @@
 # prints both loop times (min/median/max over repeats), the speed ratio, and checks that the
 # physics agrees (kinetic energy and contacts per particle at the end).
 #
-# Usage: host-tests/lammps/compare.sh [SPHERES=10000|50000] [REPEATS=3]
+# Usage: [RUSTFLAGS="-C target-cpu=x86-64-v3"] host-tests/lammps/compare.sh [SPHERES=10000|50000]
+#        [REPEATS=3]
+# The caller's RUSTFLAGS reach the build of scene_bench (each set of flags builds into its own
+# target directory), and the report says which build it timed.
 # Installs LAMMPS from the distribution's package (binary lmp) if it is missing.
 set -euo pipefail
 spheres="${1:-10000}"
@@ -18,8 +21,11 @@ if ! command -v lmp >/dev/null; then
   apt-get update -qq && apt-get install -y -qq lammps >/dev/null
 fi
 
-cargo build --release -q -p host-tests --bin scene_bench
-bench=target/release/scene_bench
+flags="${RUSTFLAGS:-}"
+target="target/compare-$(printf '%s' "${flags:-portable}" | tr -c 'A-Za-z0-9' '_')"
+echo "build: RUSTFLAGS='$flags' (target directory $target)"
+RUSTFLAGS="$flags" CARGO_TARGET_DIR="$target" cargo build --release -q -p host-tests --bin scene_bench
+bench="$target/release/scene_bench"
 
 # Settle (cached), write the packing and the deck, and time our run.
 "$bench" --spheres "$spheres" --repeat "$repeats" --lammps "$work" | tee "$work/ours.txt"

@@ -3,6 +3,7 @@
 //! so that tests compare the kernel against theory and data rather than against itself.
 
 pub mod analytic;
+pub mod build;
 pub mod data;
 pub mod energy;
 pub mod impact;

@@ -7,7 +7,7 @@
 //! the forces where the pair touches, a reset state where it is apart, the unchanged state and the
 //! same [`ContactError`] where its input is bad. Nothing branches on a lane's data, so the compiler
 //! can put the lanes side by side in vector registers; with a backend whose square root it can
-//! widen ([`Std`](crate::Std)) it does. The per-lane formulas are the one-contact path's own
+//! widen (`Std`, feature `std`) it does. The per-lane formulas are the one-contact path's own
 //! (`geometry.rs`, `law.rs` and the slots), so the bits agree by construction; the host tests
 //! check them lane by lane for every slot and status.
 
@@ -383,7 +383,7 @@ impl<L: Law> BoundLaw<'_, L> {
     /// state as it was and does not disturb the others. Read each lane with
     /// [`ContactBlock::outcome`].
     ///
-    /// Take `N` = [`LANES`] and a backend whose square root vectorises ([`Std`](crate::Std));
+    /// Take `N` = [`LANES`] and a backend whose square root vectorises (`Std`, feature `std`);
     /// with [`Libm`](crate::Libm) the lanes run one after another, with the same bits.
     ///
     /// ```

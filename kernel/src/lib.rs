@@ -111,6 +111,11 @@
 //! - **Rest.** A sphere resting on a plate for 10^6 steps does not drift or gain energy; a stored
 //!   spring holds a sphere on an incline below the friction angle, the stateless law lets it creep
 //!   (1 mm/s at 20 degrees, `mu` = 0.5). (`stress.rs`)
+//! - **Batches are the same bits.** [`BoundLaw::sphere_pairs`] gives, lane by lane, the bits,
+//!   state handling and error of the one-contact path, for every slot, both precisions, both
+//!   lever arms, every status, in any lane position and block length, on [`Libm`] and `Std`.
+//!   (`batch.rs`; properties `random_blocks_give_the_one_contact_bits_*`,
+//!   `arbitrary_bits_give_the_one_contact_outcome`)
 //! - **Pay for what you use.** [`Frictionless`], [`NonRotating`] and [`Rotating`] are zero-sized;
 //!   [`Stateless`], [`ModelC`] and [`Frictionless`] keep no per-contact state; the stored-spring
 //!   laws keep three floats. (`layout.rs`)
@@ -124,6 +129,12 @@
 //! per-contact state (`L::Float`, `L::State`). The scene crate (`examples/scene`), the C ABI and
 //! the examples reach the laws only through this public API; `docs/architecture.md` says where
 //! everything lives.
+//!
+//! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `N` pairs given as
+//! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers. It pays
+//! with a square root LLVM can widen: the `Std` backend (feature `std`: std's `sqrt`, the same
+//! correctly rounded bits as [`Libm`]'s) and a build for the CPU
+//! (`RUSTFLAGS="-C target-cpu=x86-64-v3"`); [`Law::VECTORISES`] says whether it does.
 //!
 //! ## Conventions
 //!

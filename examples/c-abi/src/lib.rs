@@ -18,7 +18,7 @@
 
 #![allow(non_camel_case_types)] // C names: ss_law_f64, ss_sphere_f32, ...
 
-use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
+use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless,
@@ -851,6 +851,37 @@ impl<'a, F: Float> Outputs<'a, F> {
         })
     }
 
+    /// A block of `N` pairs from `start`, every one of them a success: what [`Outputs::set`]
+    /// writes for each, array by array.
+    #[inline(always)]
+    fn set_block<const N: usize>(&mut self, start: usize, block: &ContactBlock<F, N>) {
+        let lanes = start..start + N;
+        let force = |l: usize| block.force_on_j(l);
+        for (l, k) in lanes.clone().enumerate() {
+            let f = force(l);
+            let (a, b) = (block.torque_on_i.get(l), block.torque_on_j.get(l));
+            let values = [
+                block.overlap[l],
+                block.normal_force[l],
+                f.x,
+                f.y,
+                f.z,
+                a.x,
+                a.y,
+                a.z,
+                b.x,
+                b.y,
+                b.z,
+            ];
+            for (array, value) in self.reals.iter_mut().zip(values) {
+                array[k] = value;
+            }
+            self.flags[0][k] = i32::from(block.touching(l));
+            self.flags[1][k] = i32::from(block.sliding[l]);
+        }
+        self.status[lanes].fill(SS_OK);
+    }
+
     /// Pair `k`'s result: its forces on success, only its code on error.
     #[inline(always)]
     fn set(&mut self, k: usize, result: Result<Interaction<F>, ContactError>) {
@@ -911,7 +942,8 @@ impl<F: Float> States<'_, F> {
 }
 
 /// The pairs in blocks of [`LANES`] through the kernel's batch path (`Std` square roots: the
-/// same bits as the single calls'), each pair's state and result written back in order.
+/// same bits as the single calls'), each pair's state and result written back in order; one at
+/// a time where the kernel says blocks do not pay ([`Law::VECTORISES`]).
 #[inline(always)]
 fn in_blocks<L: Law>(
     bound: &mut BoundLaw<'_, L>,
@@ -922,25 +954,80 @@ fn in_blocks<L: Law>(
     L::State: Stored<L::Float>,
 {
     let count = out.status.len();
+    if !L::VECTORISES {
+        // Blocks would not pay in this build (Law::VECTORISES): one pair at a time, the same bits.
+        for k in 0..count {
+            let mut state = states.load(k);
+            let result = CheckedSphere::new(sphere_at(i, k)).and_then(|a| {
+                let b = CheckedSphere::new(sphere_at(j, k))?;
+                bound.sphere_sphere(&a, &b, &mut state)
+            });
+            if result.is_ok() {
+                states.store(k, &state);
+            }
+            out.set(k, result);
+        }
+        return;
+    }
     let mut block = PairBlock::<L::Float, LANES>::default();
     let mut results = ContactBlock::default();
-    for first in (0..count).step_by(LANES) {
-        let lanes = LANES.min(count - first);
+    for start in (0..count).step_by(LANES) {
+        let lanes = LANES.min(count - start);
         let mut lane_states = [L::State::default(); LANES];
+        if lanes == LANES {
+            // Array to array, a vector at a time.
+            fill(&mut block.i, i, start);
+            fill(&mut block.j, j, start);
+        }
         for (lane, state) in lane_states.iter_mut().enumerate() {
             // Unused lanes repeat the last pair and are ignored.
-            let k = first + lane.min(lanes - 1);
-            block.set(lane, &sphere_at(i, k), &sphere_at(j, k));
+            let k = start + lane.min(lanes - 1);
+            if lanes < LANES {
+                block.set(lane, &sphere_at(i, k), &sphere_at(j, k));
+            }
             *state = states.load(k);
         }
         bound.sphere_pairs(&block, &mut lane_states, &mut results);
+        let all_ok = (0..lanes).all(|lane| results.outcome(lane).is_ok());
+        if all_ok && lanes == LANES {
+            out.set_block(start, &results);
+            for (lane, state) in lane_states.iter().enumerate() {
+                states.store(start + lane, state);
+            }
+            continue;
+        }
         for (lane, state) in lane_states.iter().enumerate().take(lanes) {
             let result = results.outcome(lane);
             if result.is_ok() {
-                states.store(first + lane, state);
+                states.store(start + lane, state);
             }
-            out.set(first + lane, result);
+            out.set(start + lane, result);
         }
+    }
+}
+
+/// Lanes `start..start + N` of the spheres' arrays into a block.
+#[inline(always)]
+fn fill<F: Float, const N: usize>(
+    lanes: &mut SphereLanes<F, N>,
+    s: &SphereSlices<'_, F>,
+    start: usize,
+) {
+    let columns = [
+        &mut lanes.position.x,
+        &mut lanes.position.y,
+        &mut lanes.position.z,
+        &mut lanes.velocity.x,
+        &mut lanes.velocity.y,
+        &mut lanes.velocity.z,
+        &mut lanes.angular_velocity.x,
+        &mut lanes.angular_velocity.y,
+        &mut lanes.angular_velocity.z,
+        &mut lanes.radius,
+        &mut lanes.mass,
+    ];
+    for (column, array) in columns.into_iter().zip(s) {
+        column.copy_from_slice(&array[start..start + N]);
     }
 }
 

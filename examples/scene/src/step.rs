@@ -47,8 +47,16 @@ impl<F: Float> KickMemo<F> {
     }
 }
 
-/// A block of the kernel's batch path and its results, reused from block to block.
-type LaneBlock<F> = (PairBlock<F, LANES>, ContactBlock<F, LANES>);
+/// Blocks of the kernel's batch path gathered before any is evaluated (see
+/// `PairContext::contacts`): 32 pairs, a few kilobytes, in L1 with the list's entries.
+const GROUP: usize = 8;
+
+/// A group of gathered blocks with their states, and one block's results.
+type Staged<F, S> = (
+    [PairBlock<F, LANES>; GROUP],
+    [[S; LANES]; GROUP],
+    ContactBlock<F, LANES>,
+);
 
 /// The spheres and the grid a contact is evaluated with.
 struct PairContext<'c, F> {
@@ -99,7 +107,11 @@ impl<F: Float> PairContext<'_, F> {
         let next = 1 - live;
         let mut law = law.at(time_step);
         let mut touching = [0u32; SIFT_BLOCK];
-        let mut lane_block = (PairBlock::default(), ContactBlock::default());
+        let mut staged: Staged<F, L::State> = (
+            [PairBlock::default(); GROUP],
+            [[L::State::default(); LANES]; GROUP],
+            ContactBlock::default(),
+        );
         for (b, block) in entries.chunks_mut(SIFT_BLOCK).enumerate() {
             let first = b * SIFT_BLOCK;
             if stores::<L::State>() {
@@ -110,14 +122,10 @@ impl<F: Float> PairContext<'_, F> {
             }
             let found = self.sift(block, &mut touching);
             if L::VECTORISES {
-                for lanes in touching[..found].chunks(LANES) {
-                    self.contacts(
-                        lanes,
-                        block,
-                        live,
-                        (&mut law, &mut lane_block),
-                        |k, c, r| add(first + k, c, r),
-                    )?;
+                for group in touching[..found].chunks(LANES * GROUP) {
+                    self.contacts(group, block, live, (&mut law, &mut staged), |k, c, r| {
+                        add(first + k, c, r)
+                    })?;
                 }
             } else {
                 for &k in &touching[..found] {
@@ -132,35 +140,46 @@ impl<F: Float> PairContext<'_, F> {
         Ok(())
     }
 
-    /// Up to [`LANES`] sifted pairs (`lanes`, positions in `block`) as one block of the kernel's
-    /// batch path: gathered once, evaluated together, then taken lane by lane in list order, so
-    /// the first failing pair's error is the one returned, as one at a time. Unused lanes repeat
-    /// the last pair and are ignored.
+    /// Up to [`GROUP`] blocks of [`LANES`] sifted pairs (`group`, positions in `block`) through
+    /// the kernel's batch path. All of them are gathered before the first is evaluated: a block
+    /// read as vectors straight after its lanes were stored one by one would wait on every
+    /// load (store-to-load forwarding cannot merge the narrow stores). Results are then taken
+    /// lane by lane in list order, so the first failing pair's error is the one returned, as one
+    /// at a time. Unused lanes repeat the last pair and are ignored.
     #[inline(always)]
     fn contacts<L: Law<Float = F>>(
         &self,
-        lanes: &[u32],
+        group: &[u32],
         block: &mut [ListEntry<L::State>],
         live: usize,
-        (law, (pairs, out)): (&mut BoundLaw<'_, L>, &mut LaneBlock<F>),
+        (law, staged): (&mut BoundLaw<'_, L>, &mut Staged<F, L::State>),
         mut add: impl FnMut(usize, Candidate, PairResult<F>),
     ) -> Result<(), ContactError> {
-        let mut states = [L::State::default(); LANES];
-        for lane in 0..LANES {
-            let entry = &block[lanes[lane.min(lanes.len() - 1)] as usize];
-            let Candidate { i, j, image } = entry.candidate;
-            let mut partner: soft_sphere::Sphere<F> = *self.spheres[j as usize];
-            // As `CheckedSphere::translated`; a position it would refuse fails the lane's check.
-            partner.position += self.grid.image_shift(image);
-            pairs.set(lane, &self.spheres[i as usize], &partner);
-            states[lane] = entry.states[live];
+        let (pairs, states, out) = staged;
+        for (lanes, (pairs, states)) in group
+            .chunks(LANES)
+            .zip(pairs.iter_mut().zip(states.iter_mut()))
+        {
+            for lane in 0..LANES {
+                let entry = &block[lanes[lane.min(lanes.len() - 1)] as usize];
+                let Candidate { i, j, image } = entry.candidate;
+                let mut partner: soft_sphere::Sphere<F> = *self.spheres[j as usize];
+                // As `CheckedSphere::translated`; a position it would refuse fails the lane's
+                // check.
+                partner.position += self.grid.image_shift(image);
+                pairs.set(lane, &self.spheres[i as usize], &partner);
+                states[lane] = entry.states[live];
+            }
         }
-        law.sphere_pairs(pairs, &mut states, out);
-        for (lane, &k) in lanes.iter().enumerate() {
-            let entry = &mut block[k as usize];
-            let result = pair_result(out.outcome(lane)?);
-            entry.states[1 - live] = states[lane];
-            add(k as usize, entry.candidate, result);
+        for (lanes, (pairs, states)) in group.chunks(LANES).zip(pairs.iter().zip(states.iter_mut()))
+        {
+            law.sphere_pairs(pairs, states, out);
+            for (lane, &k) in lanes.iter().enumerate() {
+                let entry = &mut block[k as usize];
+                let result = pair_result(out.outcome(lane)?);
+                entry.states[1 - live] = states[lane];
+                add(k as usize, entry.candidate, result);
+            }
         }
         Ok(())
     }

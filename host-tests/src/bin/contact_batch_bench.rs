@@ -138,13 +138,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     if count == 0 || rounds == 0 {
         return Err("--pairs and --rounds must be positive".into());
     }
-    let build = if cfg!(target_feature = "avx512f") {
-        "x86-64-v4 (AVX-512)"
-    } else if cfg!(target_feature = "avx2") {
-        "x86-64-v3 (AVX2)"
-    } else {
-        "portable (SSE2)"
-    };
+    let build = host_tests::build::describe();
     println!(
         "build: {build}; {LANES} f64 lanes a block, {} f32 lanes",
         2 * LANES

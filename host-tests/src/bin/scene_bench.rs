@@ -159,6 +159,8 @@ struct Measured {
     mean_overlap: f64,
     /// Sphere-sphere contact-steps at the Coulomb limit, over all contact-steps.
     sliding_fraction: f64,
+    /// Whether the scene evaluated its pairs in the kernel's batches ([`Law::VECTORISES`]).
+    batches: bool,
 }
 
 fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
@@ -216,6 +218,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
         contacts_per_particle: last.1,
         mean_overlap: last.2,
         sliding_fraction,
+        batches: L::VECTORISES,
     })
 }
 
@@ -332,6 +335,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     let n = spheres.len() as f64;
     let median = m.seconds[m.seconds.len() / 2];
     let particle_steps = n * o.steps as f64;
+    println!(
+        "build: {}; pairs in batches: {}",
+        host_tests::build::describe(),
+        if m.batches {
+            "yes"
+        } else {
+            "no (one contact at a time)"
+        }
+    );
     println!(
         "soft-sphere {} spheres, {} steps, variant {}, {:?}, {}: loop time min {:.3} s median {:.3} s max {:.3} s",
         spheres.len(),
