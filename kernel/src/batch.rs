@@ -316,9 +316,6 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
     R: Rotation,
 {
     let (law, time_step) = (bound.law(), bound.time_step());
-    // Local copies: the lanes then live in registers, with no aliasing between the ~35 streams.
-    let pairs = *block;
-    let mut kept = *states;
     let untouched = ContactForces {
         normal: Vec3::ZERO,
         overlap: F::ZERO,
@@ -330,8 +327,8 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
         sliding: false,
     };
     if !T::VECTORISES {
-        for (lane, state) in kept.iter_mut().enumerate() {
-            let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
+        for (lane, state) in states.iter_mut().enumerate() {
+            let (i, j) = (block.i.get(lane), block.j.get(lane));
             let outcome = CheckedSphere::new(i).and_then(|i| {
                 let j = CheckedSphere::new(j)?;
                 bound.sphere_sphere(&i, &j, state)
@@ -343,27 +340,19 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
             };
             out.set(lane, &forces, status);
         }
-        *states = kept;
         return;
     }
-    // A block of one kind of pair (the common case) takes the bound law's remembered oscillator:
-    // two divisions and a root fewer per lane. Bad masses never match (NaN) or fail their lane.
-    let masses = [pairs.i.mass[0], pairs.j.mass[0]];
-    let derive = |m: &[F; 2]| law.normal().oscillator::<M>(effective_mass(m[0], m[1]));
-    let uniform = (0..N).all(|lane| [pairs.i.mass[lane], pairs.j.mass[lane]] == masses);
-    let shared = if uniform {
-        Some(*bound.pair_oscillator(masses, derive))
-    } else {
-        None
-    };
+    // Local copies: the lanes then live in registers, with no aliasing between the ~35 streams.
+    let pairs = *block;
+    let mut kept = *states;
+    // Each lane derives its pair's oscillator: in vector registers that costs less than testing
+    // whether the block's masses match the bound law's remembered pair (contact_batch_bench).
+    let derive = |m: [F; 2]| law.normal().oscillator::<M>(effective_mass(m[0], m[1]));
     for (lane, state) in kept.iter_mut().enumerate() {
         let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
         let separation = Separation::of(&i, &j);
         let frame = separation.frame::<M>(&i, &j, law.lever_arm());
-        let oscillator = match shared {
-            Some(oscillator) => oscillator,
-            None => derive(&[i.mass, j.mass]),
-        };
+        let oscillator = derive([i.mass, j.mass]);
         let (forces, next) = law.touching(&frame, &oscillator, state, time_step);
         let finite = forces.is_finite() && next.is_finite();
         let status = Status::of_pair(&i, &j, &separation, finite);
