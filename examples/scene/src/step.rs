@@ -173,7 +173,7 @@ impl<F: Float> PairContext<'_, F> {
         }
         for (lanes, (pairs, states)) in group.chunks(LANES).zip(pairs.iter().zip(states.iter_mut()))
         {
-            law.sphere_pairs(pairs, states, out);
+            evaluate_block(law, pairs, states, out);
             for (lane, &k) in lanes.iter().enumerate() {
                 let entry = &mut block[k as usize];
                 let result = pair_result(out.outcome(lane)?);
@@ -183,6 +183,18 @@ impl<F: Float> PairContext<'_, F> {
         }
         Ok(())
     }
+}
+
+/// One block through the kernel's batch path, compiled as a function of its own: inlined into
+/// the threaded pair phase, the compiler no longer widened the lanes into vector instructions.
+#[inline(never)]
+fn evaluate_block<L: Law>(
+    law: &mut BoundLaw<'_, L>,
+    pairs: &PairBlock<L::Float, LANES>,
+    states: &mut [L::State; LANES],
+    out: &mut ContactBlock<L::Float, LANES>,
+) {
+    law.sphere_pairs(pairs, states, out);
 }
 
 /// What the scene keeps of one pair's outcome.

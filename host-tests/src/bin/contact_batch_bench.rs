@@ -6,7 +6,8 @@
 //! Before timing it runs both from the same states for a few steps and compares every result and
 //! state bit for bit.
 //!
-//! Prints one row per law, and as its last line
+//! Prints one row per law (blocks of `LANES` for f64, `2 * LANES` for f32, and twice that for
+//! Model AA), and as its last line
 //! `batch speed-up over the scalar law: X.XX (f64 model AA, N contacts, same bits: yes|no)`.
 //!
 //! Usage: `cargo run --release -p host-tests --bin contact_batch_bench -- [--pairs 1024]
@@ -195,7 +196,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         rounds,
     );
     print("frictionless f64", &row);
+    // Twice the lanes: what AVX-512 at full width (-C target-feature=-prefer-256-bit) prefers.
+    let dt = time_steps(&aa32, &aa32, m32);
+    let row = compare::<_, _, { 4 * LANES }>(&aa32, &aa32_std, dt, &pairs32, rounds);
+    print(&format!("model_aa f32, {} lanes", 4 * LANES), &row);
     let dt = time_steps(&aa64, &aa64, m64);
+    let row = compare::<_, _, { 2 * LANES }>(&aa64, &aa64_std, dt, &pairs64, rounds);
+    print(&format!("model_aa f64, {} lanes", 2 * LANES), &row);
     let row = compare::<_, _, LANES>(&aa64, &aa64_std, dt, &pairs64, rounds);
     print("model_aa f64", &row);
     println!(
