@@ -852,34 +852,24 @@ impl<'a, F: Float> Outputs<'a, F> {
     }
 
     /// A block of `N` pairs from `start`, every one of them a success: what [`Outputs::set`]
-    /// writes for each, array by array.
+    /// writes for each.
     #[inline(always)]
     fn set_block<const N: usize>(&mut self, start: usize, block: &ContactBlock<F, N>) {
-        let lanes = start..start + N;
-        let force = |l: usize| block.force_on_j(l);
-        for (l, k) in lanes.clone().enumerate() {
-            let f = force(l);
-            let (a, b) = (block.torque_on_i.get(l), block.torque_on_j.get(l));
-            let values = [
-                block.overlap[l],
-                block.normal_force[l],
-                f.x,
-                f.y,
-                f.z,
-                a.x,
-                a.y,
-                a.z,
-                b.x,
-                b.y,
-                b.z,
-            ];
-            for (array, value) in self.reals.iter_mut().zip(values) {
-                array[k] = value;
-            }
-            self.flags[0][k] = i32::from(block.touching(l));
-            self.flags[1][k] = i32::from(block.sliding[l]);
+        for lane in 0..N {
+            let (f, a, b) = (
+                block.force_on_j(lane),
+                block.torque_on_i.get(lane),
+                block.torque_on_j.get(lane),
+            );
+            let (touching, sliding) = (block.touching(lane), block.sliding[lane]);
+            let scalars = [block.overlap[lane], block.normal_force[lane]];
+            self.write(
+                start + lane,
+                scalars,
+                [f, a, b],
+                [touching, sliding].map(i32::from),
+            );
         }
-        self.status[lanes].fill(SS_OK);
     }
 
     /// Pair `k`'s result: its forces on success, only its code on error.
@@ -888,28 +878,43 @@ impl<'a, F: Float> Outputs<'a, F> {
         match result {
             Ok(interaction) => {
                 let f = forces_of(interaction);
-                let values = [
-                    f.overlap,
-                    f.normal_force,
-                    f.force_on_j.x,
-                    f.force_on_j.y,
-                    f.force_on_j.z,
-                    f.torque_on_i.x,
-                    f.torque_on_i.y,
-                    f.torque_on_i.z,
-                    f.torque_on_j.x,
-                    f.torque_on_j.y,
-                    f.torque_on_j.z,
-                ];
-                for (array, value) in self.reals.iter_mut().zip(values) {
-                    array[k] = value;
-                }
-                self.flags[0][k] = f.touching;
-                self.flags[1][k] = f.sliding;
-                self.status[k] = SS_OK;
+                let vectors = [f.force_on_j, f.torque_on_i, f.torque_on_j].map(Vec3::from);
+                self.write(
+                    k,
+                    [f.overlap, f.normal_force],
+                    vectors,
+                    [f.touching, f.sliding],
+                );
             }
             Err(e) => self.status[k] = contact_code(e),
         }
+    }
+
+    /// A successful pair `k`: overlap and normal force, force on j and the two torques, and the
+    /// touching and sliding flags, in the order of [`ss_forces_arrays`].
+    #[inline(always)]
+    fn write(&mut self, k: usize, scalars: [F; 2], vectors: [Vec3<F>; 3], flags: [i32; 2]) {
+        let [overlap, normal_force] = scalars;
+        let [f, a, b] = vectors;
+        let values = [
+            overlap,
+            normal_force,
+            f.x,
+            f.y,
+            f.z,
+            a.x,
+            a.y,
+            a.z,
+            b.x,
+            b.y,
+            b.z,
+        ];
+        for (array, value) in self.reals.iter_mut().zip(values) {
+            array[k] = value;
+        }
+        self.flags[0][k] = flags[0];
+        self.flags[1][k] = flags[1];
+        self.status[k] = SS_OK;
     }
 }
 
