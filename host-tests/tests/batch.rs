@@ -223,12 +223,20 @@ fn the_status_paths_are_the_documented_ones() {
                 assert_eq!(states[0], SpringDisplacement::default(), "{name}")
             }
             Err(_) => assert_eq!(states, before, "{name}: a failed lane keeps its state"),
-            Ok(Interaction::Touching(_)) => {
-                assert!(out.touching(0));
+            Ok(Interaction::Touching(forces)) => {
                 let f = out.force_on_j(0);
                 assert!(f.norm_squared() > 0.0, "{name}: a touching pair pushes");
+                // The block's total force is the contact's: normal part plus tangential part.
+                let expected = forces.normal * forces.normal_force + forces.tangential_force;
+                assert_eq!(f, expected, "{name}");
+                assert_eq!(f, forces.force_on_j(), "{name}");
             }
         }
+        assert_eq!(
+            out.touching(0),
+            matches!(outcome, Ok(Interaction::Touching(_))),
+            "{name}: touching() agrees with the outcome"
+        );
         if !matches!(outcome, Ok(Interaction::Touching(_))) {
             assert_eq!(
                 out.force_on_j(0),
