@@ -374,6 +374,9 @@ impl<L: Law> BoundLaw<'_, L> {
     ///
     /// Take `N` = [`LANES`] and a backend whose square root vectorises (`Std`, feature `std`);
     /// with [`Libm`](crate::Libm) the lanes run one after another, with the same bits.
+    /// Inlined into a large function (a threaded pair loop), the compiler may stop widening the
+    /// lanes; calling it from a small non-inlined function of the engine's keeps them widened
+    /// (the scene does so).
     ///
     /// ```
     /// use soft_sphere::batch::{ContactBlock, PairBlock};

@@ -1036,6 +1036,11 @@ fn fill<F: Float, const N: usize>(
     }
 }
 
+/// Whether the bound law keeps a per-contact state (a zero-sized state is none).
+fn keeps_state<L: Law>(_: &BoundLaw<'_, L>) -> bool {
+    size_of::<L::State>() > 0
+}
+
 /// # Safety
 /// As the exported batch calls.
 unsafe fn bound_pairs<F: Float>(
@@ -1082,10 +1087,8 @@ where
         [Some(x), Some(y), Some(z)] => States(Some([x, y, z])),
         _ => States(None),
     };
-    let stores = matches!(
-        bound.bound,
-        AnyBound::ModelAA(_) | AnyBound::ModelAALuding(_)
-    );
+    // A law that keeps a per-contact state needs its arrays.
+    let stores = each_law!(&bound.bound, AnyBound, b => keeps_state(b));
     if stores && states.0.is_none() {
         return SS_ERR_NULL;
     }
