@@ -12,10 +12,10 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use host_tests::pairs::{blocks, touching_pairs};
 use soft_sphere::batch::{ContactBlock, LANES};
 use soft_sphere::{
-    CheckedSphere, ContactLaw, Float, Frictionless, Interaction, Libm, LinearSpring,
-    LinearSpringDashpot, MathBackend, Micromath, ModelA, ModelAA, ModelB, ModelC, NormalModel,
-    Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
-    effective_mass,
+    CheckedSphere, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Libm,
+    LinearSpring, LinearSpringDashpot, MathBackend, Micromath, MindlinAA, MindlinParameters,
+    ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere, Stateless, Std,
+    TangentialModel, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -83,6 +83,22 @@ macro_rules! every_law {
             $c,
             &with("model_aa"),
             ContactLaw::new(normal, ModelAA(p)).with_backend::<$M>(),
+        );
+        let largest = HertzImpact {
+            speed: 1.0 as $F,
+            effective_radius: 1.0e-3 as $F,
+        };
+        let hertz = Hertz::new(5.0e5 as $F, 0.9 as $F, largest).unwrap();
+        let mindlin = MindlinParameters::new(2.0e5 as $F, 0.5 as $F, 0.5 as $F).unwrap();
+        bench_law(
+            $c,
+            &with("hertz_frictionless"),
+            ContactLaw::new(hertz, Frictionless).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("hertz_mindlin_aa"),
+            ContactLaw::new(hertz, MindlinAA(mindlin)).with_backend::<$M>(),
         );
     }};
 }

@@ -9,9 +9,10 @@ use host_tests::strategies::{Collision, collision, config};
 use proptest::prelude::*;
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
 use soft_sphere::{
-    ContactError, ContactLaw, Float, Frictionless, Interaction, Law, LeverArm, LinearSpringDashpot,
-    MathBackend, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere, SpringDisplacement,
-    Stateless, Std, TangentialModel, TangentialParameters, Vec3,
+    ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Law, LeverArm,
+    LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
+    MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, NormalModel, Sphere,
+    SpringDisplacement, Stateless, Std, TangentialModel, TangentialParameters, Vec3,
 };
 
 /// Runs `steps` steps of the same pairs one at a time (law `one`) and in blocks of `N` (law
@@ -116,6 +117,16 @@ impl Preloaded for () {
     fn preloaded(_: usize) -> Self {}
 }
 
+impl<F: Float> Preloaded for MindlinSpring<F> {
+    fn preloaded(k: usize) -> Self {
+        let s = F::from_f64(1e-7 * (k as f64 + 1.0));
+        Self {
+            force: Vec3::new(F::ZERO, s, -s),
+            contact_radius: F::from_f64(2e-5 * (k % 3) as f64),
+        }
+    }
+}
+
 impl<F: Float> Preloaded for SpringDisplacement<F> {
     fn preloaded(k: usize) -> Self {
         let s = F::from_f64(1e-7 * (k as f64 + 1.0));
@@ -127,9 +138,9 @@ impl<F: Float> Preloaded for SpringDisplacement<F> {
 
 /// Every status path in every lane position: the list, then the list rotated by one, two and
 /// three places, in blocks of 1, 3, [`LANES`] and 8.
-fn every_status_for<F: Float, T: TangentialModel<F>>(
+fn every_status_for<F: Float, N: NormalModel<F>, T: TangentialModel<F>>(
     name: &str,
-    law: ContactLaw<F, LinearSpringDashpot<F>, T>,
+    law: ContactLaw<F, N, T>,
 ) -> Result<(), String>
 where
     T::State: Preloaded,
@@ -163,15 +174,31 @@ where
     let f = F::from_f64;
     let normal = LinearSpringDashpot::new(f(1000.0), f(0.7)).unwrap();
     let p = TangentialParameters::new(f(285.7), f(0.5), f(0.4)).unwrap();
-    every_status_for::<F, _>("frictionless", ContactLaw::new(normal, Frictionless))?;
-    every_status_for::<F, _>("stateless", ContactLaw::new(normal, Stateless(p)))?;
-    every_status_for::<F, _>("model_c", ContactLaw::new(normal, ModelC(p)))?;
-    every_status_for::<F, _>("model_a", ContactLaw::new(normal, ModelA(p)))?;
-    every_status_for::<F, _>("model_b", ContactLaw::new(normal, ModelB(p)))?;
-    every_status_for::<F, _>("model_aa", ContactLaw::new(normal, ModelAA(p)))?;
-    every_status_for::<F, _>("model_aa_luding", ContactLaw::new(normal, ModelAALuding(p)))?;
+    every_status_for::<F, _, _>("frictionless", ContactLaw::new(normal, Frictionless))?;
+    every_status_for::<F, _, _>("stateless", ContactLaw::new(normal, Stateless(p)))?;
+    every_status_for::<F, _, _>("model_c", ContactLaw::new(normal, ModelC(p)))?;
+    every_status_for::<F, _, _>("model_a", ContactLaw::new(normal, ModelA(p)))?;
+    every_status_for::<F, _, _>("model_b", ContactLaw::new(normal, ModelB(p)))?;
+    every_status_for::<F, _, _>("model_aa", ContactLaw::new(normal, ModelAA(p)))?;
+    every_status_for::<F, _, _>("model_aa_luding", ContactLaw::new(normal, ModelAALuding(p)))?;
     let clamped = LinearSpringDashpot::clamped_with_rebound(f(1000.0), f(0.7)).unwrap();
-    every_status_for::<F, _>("model_aa clamped", ContactLaw::new(clamped, ModelAA(p)))?;
+    every_status_for::<F, _, _>("model_aa clamped", ContactLaw::new(clamped, ModelAA(p)))?;
+    let largest = HertzImpact {
+        speed: f(1.0),
+        effective_radius: f(1e-3),
+    };
+    let hertz = Hertz::new(f(5.0e5), f(0.7), largest).unwrap();
+    let mindlin = MindlinParameters::new(f(2.0e5), f(0.5), f(0.4)).unwrap();
+    every_status_for::<F, _, _>("hertz frictionless", ContactLaw::new(hertz, Frictionless))?;
+    every_status_for::<F, _, _>("mindlin_aa", ContactLaw::new(hertz, MindlinAA(mindlin)))?;
+    every_status_for::<F, _, _>(
+        "mindlin_aa_luding",
+        ContactLaw::new(hertz, MindlinAALuding(mindlin)),
+    )?;
+    every_status_for::<F, _, _>(
+        "mindlin_stateless",
+        ContactLaw::new(hertz, MindlinStateless(mindlin)),
+    )?;
     Ok(())
 }
 

@@ -37,6 +37,10 @@ fn off_slots_and_stateless_laws_cost_no_memory() {
 fn stored_spring_laws_keep_three_floats_per_contact() {
     assert_eq!(size_of::<SpringDisplacement<f32>>(), 12);
     assert_eq!(size_of::<SpringDisplacement<f64>>(), 24);
+    // Mindlin's: the spring's force and the contact radius.
+    assert_eq!(size_of::<soft_sphere::MindlinSpring<f32>>(), 16);
+    assert_eq!(size_of::<soft_sphere::MindlinSpring<f64>>(), 32);
+    assert_eq!(state_size::<soft_sphere::MindlinStateless<f64>>(), 0);
     assert_eq!(state_size::<ModelA<f64>>(), 24);
     assert_eq!(state_size::<ModelB<f64>>(), 24);
     assert_eq!(state_size::<ModelAA<f64>>(), 24);

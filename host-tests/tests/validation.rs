@@ -2,7 +2,7 @@
 //! enforces: this test fails exactly when `cargo run -p host-tests --bin validate` would exit
 //! non-zero.
 
-use host_tests::validation::{CaseOutput, kharaz, normal, plate};
+use host_tests::validation::{CaseOutput, chung_ooi, kharaz, normal, plate};
 
 fn assert_all_pass(case: &CaseOutput) {
     assert!(!case.checks.is_empty(), "the case made no checks");
@@ -100,4 +100,35 @@ fn velocity_verlet_rebounds_with_e_and_converges_at_first_order() {
     };
     let ratio = error(100.0) / error(200.0);
     assert!((ratio - 2.0).abs() < 0.2, "ratio {ratio}");
+}
+
+#[test]
+fn chung_ooi_tests_1_and_2_follow_hertz() {
+    let case = chung_ooi::elastic(|_| {});
+    assert_all_pass(&case);
+    // Peak overlap, duration and force-overlap curve for four materials.
+    assert_eq!(case.checks.len(), 12);
+}
+
+#[test]
+fn chung_ooi_test_3_rebounds_at_the_input_restitution_at_every_speed() {
+    let case = chung_ooi::restitution(|_| {});
+    assert_all_pass(&case);
+    // Two materials, three speeds a factor 100 apart, eleven restitution coefficients.
+    assert_eq!(case.checks.len(), 66);
+}
+
+#[test]
+fn chung_ooi_tests_4_to_8_meet_rigid_body_theory_in_gross_sliding() {
+    let case = chung_ooi::kharaz(|_| {});
+    assert_all_pass(&case);
+    let case = chung_ooi::oblique(|_| {});
+    assert_all_pass(&case);
+    for name in ["chung_ooi_test5", "chung_ooi_test6"] {
+        assert!(
+            case.table(name).rows.len() >= 40,
+            "{name} has too few points"
+        );
+    }
+    assert_eq!(case.table("chung_ooi_test5").column("hertz_aa").len(), 48);
 }

@@ -24,6 +24,12 @@ pub enum Parameter {
     TimeStep,
     /// A wall's normal vector or reference point.
     Wall,
+    /// An elastic modulus: Young's `E`, or a contact's `E*` or `G*`.
+    Modulus,
+    /// Poisson's ratio `nu`.
+    PoissonRatio,
+    /// An impact speed.
+    Speed,
 }
 
 /// A parameter rejected by a constructor.
@@ -38,6 +44,8 @@ pub enum ParameterError {
     Negative(Parameter),
     /// The coefficient of restitution must lie in `[0, 1]`.
     RestitutionOutOfRange,
+    /// Poisson's ratio must lie in `(-1, 0.5]`.
+    PoissonRatioOutOfRange,
     /// No damping ratio up to critical gives this rebound ratio with the attraction clipped
     /// ([`LinearSpringDashpot::clamped_with_rebound`](crate::LinearSpringDashpot::clamped_with_rebound)).
     ReboundUnreachable {
@@ -64,6 +72,7 @@ impl fmt::Display for ParameterError {
             Self::NotPositive(p) => write!(f, "{p:?} must be positive"),
             Self::Negative(p) => write!(f, "{p:?} must not be negative"),
             Self::RestitutionOutOfRange => write!(f, "restitution must lie in [0, 1]"),
+            Self::PoissonRatioOutOfRange => write!(f, "Poisson's ratio must lie in (-1, 0.5]"),
             Self::ReboundUnreachable { rebound, lowest } => write!(
                 f,
                 "a clipped linear dashpot cannot rebound at {rebound}: the lowest is {lowest}"

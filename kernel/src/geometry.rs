@@ -26,6 +26,9 @@ pub enum LeverArm {
 pub(crate) struct ContactFrame<F> {
     pub normal: Vec3<F>,
     pub overlap: F,
+    /// `R* = R_i R_j / (R_i + R_j)`, or `R` against a wall. Only a Hertz law reads it; for the
+    /// others the division is dead code and is removed.
+    pub effective_radius: F,
     pub arm_i: F,
     pub arm_j: F,
     /// Translational velocity of j relative to i.
@@ -96,6 +99,7 @@ impl<F: Float> Separation<F> {
         ContactFrame {
             normal: self.offset * inverse_distance,
             overlap,
+            effective_radius: i.radius * j.radius / reach,
             arm_i,
             arm_j,
             velocity: j.velocity - i.velocity,
@@ -146,6 +150,7 @@ pub(crate) fn sphere_wall<F: Float>(
         // From the sphere into the wall.
         normal: -wall.normal(),
         overlap,
+        effective_radius: sphere.radius,
         arm_i,
         arm_j: F::ZERO,
         velocity: wall.velocity() - sphere.velocity,

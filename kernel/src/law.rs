@@ -145,7 +145,17 @@ impl<F> Interaction<F> {
 impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
     /// A law from its normal and tangential slots, with the libm backend, rotating spheres and
     /// the radius as lever arm.
+    ///
+    /// A tangential law whose stiffness grows with the contact radius (the Mindlin laws) needs a
+    /// normal law that has one ([`Hertz`](crate::Hertz)); pairing it with a linear law does not
+    /// compile.
     pub fn new(normal: N, tangential: T) -> Self {
+        const {
+            assert!(
+                !T::NEEDS_CONTACT_RADIUS || N::CONTACT_RADIUS,
+                "this tangential law's stiffness needs a normal law with a contact radius (Hertz)"
+            );
+        }
         Self {
             normal,
             tangential,
@@ -204,7 +214,8 @@ where
         self.lever_arm
     }
 
-    /// The normal oscillator of a contact with this effective mass (reference backend).
+    /// What the normal law derives for a pair of this effective mass (reference backend): a
+    /// linear law's oscillator; see [`NormalModel::oscillator`].
     pub fn oscillator(&self, effective_mass: F) -> NormalOscillator<F> {
         self.normal.oscillator::<F::DefaultBackend>(effective_mass)
     }
@@ -225,10 +236,8 @@ where
         } else {
             effective_mass
         };
-        let oscillator = self.oscillator(effective_mass);
-        let tangential = self
-            .tangential
-            .critical_time_step(&oscillator, tangential_mass);
+        let design = self.normal.design_contact(effective_mass);
+        let tangential = self.tangential.critical_time_step(&design, tangential_mass);
         self.normal
             .critical_time_step(effective_mass)
             .min_of(tangential)
@@ -244,7 +253,12 @@ where
         let duration = if duration.is_finite() {
             duration
         } else {
-            F::PI / self.oscillator(effective_mass).natural_frequency
+            F::PI
+                / self
+                    .normal
+                    .design_contact(effective_mass)
+                    .oscillator
+                    .natural_frequency
         };
         let margin = self.critical_time_step(effective_mass) / F::from_f64(5.0);
         (duration / F::from_f64(50.0)).min_of(margin)
@@ -378,9 +392,13 @@ where
     ) -> (ContactForces<F>, T::State) {
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
-        let normal_force = self
-            .normal
-            .force(frame.overlap, normal_velocity, oscillator);
+        let normal = self.normal.contact::<M>(
+            frame.overlap,
+            normal_velocity,
+            frame.effective_radius,
+            oscillator,
+        );
+        let normal_force = normal.force;
 
         let mut forces = ContactForces {
             normal: n,
@@ -406,7 +424,8 @@ where
                 normal_force,
                 overlap: frame.overlap,
                 approach_rate: -normal_velocity,
-                oscillator: *oscillator,
+                oscillator: normal.oscillator,
+                contact_radius: normal.contact_radius,
                 time_step: time_step.seconds(),
             };
             let output = self.tangential.force::<M>(state, &input);

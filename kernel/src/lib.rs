@@ -117,8 +117,12 @@
 //!   (`batch.rs`; properties `random_blocks_give_the_one_contact_bits_*`,
 //!   `arbitrary_bits_give_the_one_contact_outcome`)
 //! - **Pay for what you use.** [`Frictionless`], [`NonRotating`] and [`Rotating`] are zero-sized;
-//!   [`Stateless`], [`ModelC`] and [`Frictionless`] keep no per-contact state; the stored-spring
-//!   laws keep three floats. (`layout.rs`)
+//!   [`Stateless`], [`ModelC`], [`MindlinStateless`] and [`Frictionless`] keep no per-contact
+//!   state; the stored-spring laws keep three floats, the stored Mindlin laws four. (`layout.rs`)
+//! - **Hertz rebounds at `e`.** [`Hertz`]'s dashpot is solved from the restitution, so a free
+//!   impact rebounds at `e` (within 0.5 %) at any speed; its force follows Hertz's closed form
+//!   and the Mindlin laws keep the Coulomb limit, create no energy, are symmetric and frame
+//!   invariant. (`validation.rs`, Chung & Ooi Tests 1-3; `hertz.rs`)
 //!
 //! ## Engines: the checked fast path
 //!
@@ -160,6 +164,7 @@ mod error;
 mod float;
 mod geometry;
 mod law;
+mod material;
 pub mod motion;
 mod normal;
 mod rotation;
@@ -178,11 +183,16 @@ pub use error::{ContactError, Parameter, ParameterError};
 pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
-pub use normal::{LinearSpring, LinearSpringDashpot, NormalModel, NormalOscillator};
+pub use material::Material;
+pub use normal::{
+    Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
+    NormalOscillator,
+};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use store::{ContactHistory, ContactKey};
 pub use tangential::{
-    ContactState, Frictionless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, SpringDisplacement,
+    ContactState, Frictionless, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
+    MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, SpringDisplacement,
     Stateless, TangentialModel, TangentialParameters,
 };
 pub use time_step::TimeStep;

@@ -80,6 +80,11 @@
 #define SS_ERR_BAD_WALL 13
 
 /**
+ * Poisson's ratio outside `(-1, 0.5]`.
+ */
+#define SS_ERR_POISSON_RATIO 14
+
+/**
  * The stateless (simplified) law: no tangential history is read or written.
  */
 #define SS_MODEL_STATELESS 0

@@ -55,6 +55,8 @@ pub const SS_ERR_COINCIDENT_CENTRES: i32 = 11;
 pub const SS_ERR_NON_FINITE_RESULT: i32 = 12;
 /// The wall normal is zero, or a wall field is not finite.
 pub const SS_ERR_BAD_WALL: i32 = 13;
+/// Poisson's ratio outside `(-1, 0.5]`.
+pub const SS_ERR_POISSON_RATIO: i32 = 14;
 
 /// The stateless (simplified) law: no tangential history is read or written.
 pub const SS_MODEL_STATELESS: i32 = 0;
@@ -94,6 +96,7 @@ fn rejected_parameter(error: ParameterError) -> i32 {
             Parameter::Restitution
         }
         ParameterError::TimeStepUnstable { .. } => Parameter::TimeStep,
+        ParameterError::PoissonRatioOutOfRange => Parameter::PoissonRatio,
     };
     match parameter {
         Parameter::NormalStiffness => SS_PARAMETER_NORMAL_STIFFNESS,
@@ -115,6 +118,7 @@ fn parameter_code(error: ParameterError) -> i32 {
             SS_ERR_RESTITUTION
         }
         ParameterError::TimeStepUnstable { .. } => SS_ERR_UNSTABLE_TIME_STEP,
+        ParameterError::PoissonRatioOutOfRange => SS_ERR_POISSON_RATIO,
     }
 }
 

@@ -13,7 +13,7 @@ use host_tests::analytic::{rigid_body_oblique, rolling_onset};
 use host_tests::data;
 use host_tests::plot::{Axes, Mark, Series, chart};
 use host_tests::validation::kharaz::{self, Model, TALK};
-use host_tests::validation::{CaseOutput, Cell, Table, normal, plate};
+use host_tests::validation::{CaseOutput, Cell, Table, chung_ooi, normal, plate};
 
 fn main() -> ExitCode {
     match run() {
@@ -65,6 +65,22 @@ fn run() -> Result<bool, Box<dyn Error>> {
             "Sphere sliding on a plate (docs/physics.md, section 5.3)",
             plate::case(progress),
         ),
+        (
+            "Chung & Ooi Tests 1 and 2: elastic impacts (docs/physics.md, section 5.5)",
+            chung_ooi::elastic(progress),
+        ),
+        (
+            "Chung & Ooi Test 3: restitution (docs/physics.md, section 5.5)",
+            chung_ooi::restitution(progress),
+        ),
+        (
+            "Chung & Ooi Test 4: Kharaz with Hertz-Mindlin (docs/physics.md, section 5.5)",
+            chung_ooi::kharaz(progress),
+        ),
+        (
+            "Chung & Ooi Tests 5 to 8: oblique impacts (docs/physics.md, section 5.5)",
+            chung_ooi::oblique(progress),
+        ),
     ];
     progress("writing results");
     for (title, case) in &cases {
@@ -73,7 +89,7 @@ fn run() -> Result<bool, Box<dyn Error>> {
             table.write_csv(&out_dir.join(format!("{name}.csv")))?;
         }
     }
-    let [_, (_, talk), (_, mfix), (_, plate)] = &cases;
+    let [_, (_, talk), (_, mfix), (_, plate), ..] = &cases;
     plot_kharaz(&out_dir, talk)?;
     plot_mfix(&out_dir, mfix)?;
     plot_plate(&out_dir, plate)?;

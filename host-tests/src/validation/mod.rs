@@ -2,6 +2,7 @@
 //! tolerance the project states for it. The `validate` binary prints and writes them; the
 //! `validation` test runs the same cases and fails when a tolerance is missed.
 
+pub mod chung_ooi;
 pub mod kharaz;
 pub mod normal;
 pub mod plate;

@@ -3,7 +3,7 @@
 use super::{TangentialInput, TangentialModel, TangentialOutput};
 use crate::backend::MathBackend;
 use crate::float::Float;
-use crate::normal::NormalOscillator;
+use crate::normal::NormalContact;
 use crate::vector::Vec3;
 
 /// No friction: a zero-sized slot with no state. A law built with it computes neither the slip
@@ -24,7 +24,7 @@ impl<F: Float> TangentialModel<F> for Frictionless {
         }
     }
 
-    fn critical_time_step(&self, _: &NormalOscillator<F>, _: F) -> F {
+    fn critical_time_step(&self, _: &NormalContact<F>, _: F) -> F {
         F::INFINITY
     }
 }

@@ -8,7 +8,7 @@ use super::{
 };
 use crate::backend::MathBackend;
 use crate::float::Float;
-use crate::normal::NormalOscillator;
+use crate::normal::NormalContact;
 use crate::vector::Vec3;
 
 /// The stored tangential spring of one contact: the displacement `xi` of body j's contact point
@@ -111,7 +111,8 @@ macro_rules! stored_spring_model {
                 stored_spring_step::<F, M>(&self.0, state, contact, $slide, $keep)
             }
 
-            fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
+            fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        let oscillator = &design.oscillator;
                 self.0.spring_critical_step(oscillator, tangential_mass)
             }
         }

@@ -12,12 +12,22 @@
 //! | [`ModelAA`] (Elghannay & Tafti's proper implementation) | stored | along the trial force | limited to `mu |F_n| / k_t` |
 //! | [`ModelAALuding`] (Luding 2008) | stored | along the trial force | `-(F_t + eta_t v_t) / k_t` |
 //!
+//! Under a [`Hertz`](crate::Hertz) normal law the spring is Mindlin's, `k_t = 8 G* a`, stiffening
+//! with the contact radius `a`:
+//!
+//! | slot | spring used in the trial force | sliding force | spring kept |
+//! |---|---|---|---|
+//! | [`MindlinStateless`] | `-k_t(a) v_t t_e` | along the trial force | none |
+//! | [`MindlinAA`] | stored force `F_s`, `+= -k_t(a) v_t dt`, times `a / a_prev` when unloading | along the trial force | limited to `mu |F_n|` |
+//! | [`MindlinAALuding`] | as [`MindlinAA`] | along the trial force | `F_t + eta_t v_t` |
+//!
 //! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = r eta_n` (`r` the dashpot ratio); the contact sticks
 //! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
 //! square root; within the backend's square-root error otherwise).
 
 mod frictionless;
 mod history;
+mod mindlin;
 mod model_c;
 mod stateless;
 
@@ -25,13 +35,14 @@ pub use frictionless::Frictionless;
 pub use history::{
     ModelA, ModelAA, ModelAALuding, ModelB, SpringDisplacement, rotate_into_tangent_plane,
 };
+pub use mindlin::{MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless};
 pub use model_c::ModelC;
 pub use stateless::{Stateless, elapsed_contact_time};
 
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError, non_negative, positive};
 use crate::float::Float;
-use crate::normal::NormalOscillator;
+use crate::normal::{NormalContact, NormalOscillator};
 use crate::vector::Vec3;
 
 /// Per-contact state a tangential slot keeps between steps. `()` for slots that keep none.
@@ -61,8 +72,12 @@ pub struct TangentialInput<F> {
     pub overlap: F,
     /// Rate of change of the overlap, `-v_n` (positive while approaching).
     pub approach_rate: F,
-    /// The contact's normal oscillator (gives `eta_n`, and the elapsed-time estimate).
+    /// The contact's normal oscillator at this overlap (gives `eta_n`, and the elapsed-time
+    /// estimate).
     pub oscillator: NormalOscillator<F>,
+    /// Radius of the contact area (m) for a normal law that has one ([`Hertz`](crate::Hertz)),
+    /// else zero.
+    pub contact_radius: F,
     /// The time step.
     pub time_step: F,
 }
@@ -100,10 +115,16 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
         contact: &TangentialInput<F>,
     ) -> TangentialOutput<F, Self::State>;
 
-    /// Largest stable explicit time step of the tangential mode, for a contact with the given normal
-    /// oscillator and tangential effective mass (`2/7 m*` for rotating solid spheres, `m*` without
+    /// Whether the law's stiffness grows with the contact radius, so that it needs a normal law
+    /// that has one ([`NormalModel::CONTACT_RADIUS`](crate::NormalModel::CONTACT_RADIUS)); a
+    /// [`ContactLaw`](crate::ContactLaw) pairing it with one that has none does not compile.
+    const NEEDS_CONTACT_RADIUS: bool = false;
+
+    /// Largest stable explicit time step of the tangential mode, for the normal law's stiffest
+    /// expected contact ([`NormalModel::design_contact`](crate::NormalModel::design_contact))
+    /// and the tangential effective mass (`2/7 m*` for rotating solid spheres, `m*` without
     /// rotation). Infinite when the law adds no stiffness or damping.
-    fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F;
+    fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F;
 }
 
 /// Stiffness, dashpot and friction shared by every frictional slot.
@@ -190,9 +211,7 @@ impl<F: Float> TangentialParameters<F> {
 
     /// Stability bound of a tangential spring with this stiffness and dashpot.
     pub(crate) fn spring_critical_step(&self, oscillator: &NormalOscillator<F>, mass: F) -> F {
-        let frequency = F::DefaultBackend::sqrt(self.stiffness / mass);
-        let damping_ratio = self.dashpot(oscillator) / (F::TWO * mass * frequency);
-        crate::normal::damped_critical_step(frequency, damping_ratio)
+        spring_critical_step(self.stiffness, self.dashpot(oscillator), mass)
     }
 }
 
@@ -227,4 +246,11 @@ pub(crate) fn coulomb<F: Float, M: MathBackend<F>>(
         direction * (limit * M::inv_sqrt(direction.norm_squared())),
         true,
     )
+}
+
+/// Stability bound of a tangential spring `stiffness` with dashpot `dashpot` on `mass`.
+pub(crate) fn spring_critical_step<F: Float>(stiffness: F, dashpot: F, mass: F) -> F {
+    let frequency = F::DefaultBackend::sqrt(stiffness / mass);
+    let damping_ratio = dashpot / (F::TWO * mass * frequency);
+    crate::normal::damped_critical_step(frequency, damping_ratio)
 }

@@ -3,7 +3,7 @@
 use super::{Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters};
 use crate::backend::MathBackend;
 use crate::float::Float;
-use crate::normal::NormalOscillator;
+use crate::normal::NormalContact;
 
 /// Model C: the spring sees only this step's displacement, `xi = v_t dt`, and a sliding contact
 /// pushes against the slip. Nothing is stored.
@@ -34,7 +34,8 @@ impl<F: Float> TangentialModel<F> for ModelC<F> {
     /// For this law the bound depends on the step itself (`c = k_t dt + eta_t`); the returned value
     /// is the root of `k_t dt^2 + eta_t dt = 2 m_t`, the largest step for which the explicit update of
     /// a sticking contact does not overshoot.
-    fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
+    fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        let oscillator = &design.oscillator;
         let stiffness = self.0.stiffness();
         let dashpot = self.0.dashpot(oscillator);
         let discriminant = dashpot * dashpot + F::from_f64(8.0) * stiffness * tangential_mass;

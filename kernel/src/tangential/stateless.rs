@@ -4,7 +4,7 @@
 use super::{Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters};
 use crate::backend::MathBackend;
 use crate::float::Float;
-use crate::normal::NormalOscillator;
+use crate::normal::{NormalContact, NormalOscillator};
 
 /// The stateless law: `xi = v_t t_e`, then Model AA's limit and sliding rule. Stores nothing.
 ///
@@ -79,7 +79,8 @@ impl<F: Float> TangentialModel<F> for Stateless<F> {
 
     /// While sticking the law is a dashpot of strength `k_t t_e + eta_t`, with `t_e` at most
     /// `pi / wd`: the explicit update of the slip stays stable below `2 m_t / (k_t pi / wd + eta_t)`.
-    fn critical_time_step(&self, oscillator: &NormalOscillator<F>, tangential_mass: F) -> F {
+    fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        let oscillator = &design.oscillator;
         let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
         let dashpot = self.0.stiffness() * longest + self.0.dashpot(oscillator);
         F::TWO * tangential_mass / dashpot

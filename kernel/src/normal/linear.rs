@@ -1,47 +1,9 @@
-//! The normal slot: how the overlap and approach rate become a normal force.
+//! The linear laws: a spring, with or without a dashpot.
 
+use super::{NormalContact, NormalModel, NormalOscillator, damped_critical_step};
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError, positive};
 use crate::float::Float;
-
-/// The linear normal oscillator of one contact (effective mass `m*`, stiffness `k_n`, dashpot
-/// `eta_n`): everything the normal and tangential laws derive from the mass of the pair.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct NormalOscillator<F> {
-    /// Undamped angular frequency `w0 = sqrt(k_n / m*)` (rad/s).
-    pub natural_frequency: F,
-    /// Normal dashpot coefficient `eta_n` (N s/m).
-    pub damping_coefficient: F,
-    /// Decay rate `beta = eta_n / (2 m*)` (1/s).
-    pub decay_rate: F,
-    /// Damped angular frequency `wd = sqrt(w0^2 - beta^2)` (rad/s); zero at critical damping.
-    pub damped_frequency: F,
-}
-
-impl<F: Float> NormalOscillator<F> {
-    /// Damping ratio `beta / w0`.
-    pub fn damping_ratio(&self) -> F {
-        self.decay_rate / self.natural_frequency
-    }
-}
-
-/// A normal force law: the first slot of a [`ContactLaw`](crate::ContactLaw).
-pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
-    /// The oscillator of a contact with effective mass `effective_mass`, computed with backend `M`.
-    fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F>;
-
-    /// Normal force on body `j` along the unit normal (positive pushes the bodies apart), from the
-    /// overlap `delta > 0` and the normal relative velocity `v_n` (negative while approaching).
-    fn force(&self, overlap: F, normal_velocity: F, oscillator: &NormalOscillator<F>) -> F;
-
-    /// How long a binary impact carries normal force (s): from first touch until the force ends.
-    /// Infinite when it never ends (critical damping without the attraction clamp).
-    fn contact_duration(&self, effective_mass: F) -> F;
-
-    /// Largest time step for which explicit (symplectic Euler, leapfrog, velocity Verlet)
-    /// integration of this law's oscillator is stable.
-    fn critical_time_step(&self, effective_mass: F) -> F;
-}
 
 /// Linear spring and dashpot: `F_n = k_n delta - eta_n v_n`, with `eta_n` from a coefficient of
 /// restitution so that a free binary impact rebounds with exactly `e` times its approach speed.
@@ -192,12 +154,30 @@ impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
     }
 
     #[inline(always)]
-    fn force(&self, overlap: F, normal_velocity: F, oscillator: &NormalOscillator<F>) -> F {
+    fn contact<M: MathBackend<F>>(
+        &self,
+        overlap: F,
+        normal_velocity: F,
+        _: F,
+        oscillator: &NormalOscillator<F>,
+    ) -> NormalContact<F> {
         let force = self.stiffness * overlap - oscillator.damping_coefficient * normal_velocity;
-        if self.clamp_attraction {
+        let force = if self.clamp_attraction {
             force.max_of(F::ZERO)
         } else {
             force
+        };
+        NormalContact {
+            force,
+            oscillator: *oscillator,
+            contact_radius: F::ZERO,
+        }
+    }
+
+    fn design_contact(&self, effective_mass: F) -> NormalContact<F> {
+        NormalContact {
+            oscillator: self.oscillator::<F::DefaultBackend>(effective_mass),
+            ..NormalContact::default()
         }
     }
 
@@ -221,14 +201,6 @@ impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
         let o = self.oscillator::<F::DefaultBackend>(effective_mass);
         damped_critical_step(o.natural_frequency, self.damping_ratio)
     }
-}
-
-/// Stability bound of explicit integration for a damped linear oscillator of frequency `w` and
-/// damping ratio `zeta`: `dt < (2 / w) (sqrt(1 + zeta^2) - zeta)` (symplectic Euler and central
-/// differences share it; it reduces to `2 / w` without damping).
-pub(crate) fn damped_critical_step<F: Float>(frequency: F, damping_ratio: F) -> F {
-    let root = F::DefaultBackend::sqrt(F::ONE + damping_ratio * damping_ratio);
-    F::TWO / frequency * (root - damping_ratio)
 }
 
 /// Linear spring without a dashpot, `F_n = k_n delta`: restitution 1, for scenes that need no
@@ -263,8 +235,25 @@ impl<F: Float> NormalModel<F> for LinearSpring<F> {
     }
 
     #[inline(always)]
-    fn force(&self, overlap: F, _: F, _: &NormalOscillator<F>) -> F {
-        self.stiffness * overlap
+    fn contact<M: MathBackend<F>>(
+        &self,
+        overlap: F,
+        _: F,
+        _: F,
+        oscillator: &NormalOscillator<F>,
+    ) -> NormalContact<F> {
+        NormalContact {
+            force: self.stiffness * overlap,
+            oscillator: *oscillator,
+            contact_radius: F::ZERO,
+        }
+    }
+
+    fn design_contact(&self, effective_mass: F) -> NormalContact<F> {
+        NormalContact {
+            oscillator: self.oscillator::<F::DefaultBackend>(effective_mass),
+            ..NormalContact::default()
+        }
     }
 
     fn contact_duration(&self, effective_mass: F) -> F {

@@ -1,0 +1,250 @@
+//! The tangential laws under a [`Hertz`](crate::Hertz) contact: Mindlin's no-slip stiffness
+//! `k_t = 8 G* a`, which grows with the contact radius `a`, with Model AA's slider.
+//!
+//! The stored laws keep the spring's force, not its displacement, and update it by increments,
+//! `F_s += -k_t(a) v_t dt`, rescaling it by `a / a_prev` when the contact unloads (Thornton et
+//! al. 2013; LAMMPS `mindlin_rescale/force`). Of the ways to let `k_t` follow the overlap this is
+//! the one that creates no energy: with a stored displacement (`F_s = -k_t(a) xi`, LAMMPS
+//! `mindlin`) loading at a fixed displacement stiffens the spring for free, and a spring loaded at
+//! a small contact and released at a large one gives back more work than it took
+//! (`docs/physics.md`, section 3.3; the energy property in `host-tests/tests/properties.rs`).
+
+use super::{
+    ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, coulomb,
+    rotate_into_tangent_plane, spring_critical_step,
+};
+use crate::backend::MathBackend;
+use crate::error::{Parameter, ParameterError, non_negative, positive};
+use crate::float::Float;
+use crate::normal::{NormalContact, NormalOscillator};
+use crate::vector::Vec3;
+
+/// Mindlin's shear modulus, dashpot and friction, shared by the Mindlin laws.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MindlinParameters<F> {
+    shear_modulus: F,
+    dashpot_ratio: F,
+    friction: F,
+}
+
+impl<F: Float> MindlinParameters<F> {
+    /// Effective shear modulus `G*` (Pa; [`Material`](crate::Material) computes it), the dashpot
+    /// ratio `r = eta_t / eta_n` and the Coulomb coefficient `mu`.
+    ///
+    /// # Errors
+    /// [`ParameterError::NonFinite`] for any non-finite value, [`ParameterError::NotPositive`]
+    /// for `G* <= 0`, [`ParameterError::Negative`] for a negative dashpot ratio or `mu`.
+    pub fn new(shear_modulus: F, dashpot_ratio: F, friction: F) -> Result<Self, ParameterError> {
+        Ok(Self {
+            shear_modulus: positive(shear_modulus, Parameter::Modulus)?,
+            dashpot_ratio: non_negative(dashpot_ratio, Parameter::DashpotRatio)?,
+            friction: non_negative(friction, Parameter::Friction)?,
+        })
+    }
+
+    /// Effective shear modulus `G*` (Pa).
+    pub fn shear_modulus(&self) -> F {
+        self.shear_modulus
+    }
+
+    /// The dashpot ratio `eta_t / eta_n`.
+    pub fn dashpot_ratio(&self) -> F {
+        self.dashpot_ratio
+    }
+
+    /// Coulomb friction coefficient `mu`.
+    pub fn friction(&self) -> F {
+        self.friction
+    }
+
+    /// Mindlin's no-slip stiffness `k_t = 8 G* a` at contact radius `a`.
+    #[inline(always)]
+    pub fn stiffness(&self, contact_radius: F) -> F {
+        F::from_f64(8.0) * self.shear_modulus * contact_radius
+    }
+
+    #[inline(always)]
+    fn dashpot(&self, oscillator: &NormalOscillator<F>) -> F {
+        self.dashpot_ratio * oscillator.damping_coefficient
+    }
+
+    #[inline(always)]
+    fn limit(&self, contact: &TangentialInput<F>) -> F {
+        self.friction * contact.normal_force.abs()
+    }
+
+    fn critical_step(&self, design: &NormalContact<F>, mass: F) -> F {
+        let stiffness = self.stiffness(design.contact_radius);
+        spring_critical_step(stiffness, self.dashpot(&design.oscillator), mass)
+    }
+}
+
+/// The stored Mindlin spring of one contact: the spring's force and the contact radius it was
+/// last updated at. 4 floats; the caller owns it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
+pub struct MindlinSpring<F> {
+    /// The spring's force on body j (N), kept in the current tangent plane (the tangential
+    /// force without its dashpot).
+    pub force: Vec3<F>,
+    /// The contact radius `a` (m) at the last update.
+    pub contact_radius: F,
+}
+
+impl<F: Float> ContactState for MindlinSpring<F> {
+    #[inline(always)]
+    fn is_finite(&self) -> bool {
+        self.force.is_finite() && self.contact_radius.is_finite()
+    }
+}
+
+/// What a stored Mindlin law keeps of its spring after a sliding step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Keep {
+    /// At most `mu |F_n|` of it (the plain cap).
+    Capped,
+    /// The spring whose force with the dashpot's is the sliding force, `F_t + eta_t v_t`
+    /// (Luding 2008).
+    Luding,
+}
+
+#[inline(always)]
+fn mindlin_step<F: Float, M: MathBackend<F>>(
+    parameters: &MindlinParameters<F>,
+    state: &MindlinSpring<F>,
+    contact: &TangentialInput<F>,
+    keep: Keep,
+) -> TangentialOutput<F, MindlinSpring<F>> {
+    let radius = contact.contact_radius;
+    let rotated = rotate_into_tangent_plane::<F, M>(state.force, contact.normal);
+    // Unloading shrinks the spring with the contact (`a < a_prev`); loading does not grow it.
+    let unloaded = if radius < state.contact_radius {
+        rotated * (radius / state.contact_radius)
+    } else {
+        rotated
+    };
+    let stiffness = parameters.stiffness(radius);
+    let spring = unloaded - contact.slip_velocity * (stiffness * contact.time_step);
+    let dashpot = contact.slip_velocity * parameters.dashpot(&contact.oscillator);
+    let limit = parameters.limit(contact);
+    let (force, sliding) = coulomb::<F, M>(
+        spring - dashpot,
+        contact.slip_velocity,
+        limit,
+        Slide::AlongTrial,
+    );
+    let kept = match keep {
+        Keep::Capped if sliding => {
+            let length_squared = spring.norm_squared();
+            if length_squared > limit * limit {
+                spring * (limit * M::inv_sqrt(length_squared))
+            } else {
+                spring
+            }
+        }
+        Keep::Luding if sliding => force + dashpot,
+        _ => spring,
+    };
+    TangentialOutput {
+        force,
+        state: MindlinSpring {
+            force: kept,
+            contact_radius: radius,
+        },
+        sliding,
+    }
+}
+
+macro_rules! stored_mindlin_model {
+    ($(#[$doc:meta])* $name:ident, $keep:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct $name<F>(pub MindlinParameters<F>);
+
+        impl<F: Float> TangentialModel<F> for $name<F> {
+            type State = MindlinSpring<F>;
+            const NEEDS_CONTACT_RADIUS: bool = true;
+
+            #[inline(always)]
+            fn force<M: MathBackend<F>>(
+                &self,
+                state: &MindlinSpring<F>,
+                contact: &TangentialInput<F>,
+            ) -> TangentialOutput<F, MindlinSpring<F>> {
+                mindlin_step::<F, M>(&self.0, state, contact, $keep)
+            }
+
+            fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+                self.0.critical_step(design, tangential_mass)
+            }
+        }
+    };
+}
+
+stored_mindlin_model!(
+    /// Hertz-Mindlin with Model AA's plain cap: Mindlin's spring `k_t = 8 G* a`, stored as a force
+    /// and rescaled on unloading, the sliding force along the trial force, and the stored spring
+    /// limited to `mu |F_n|` after every sliding step. The Hertz counterpart of
+    /// [`ModelAA`](crate::ModelAA).
+    MindlinAA,
+    Keep::Capped
+);
+
+stored_mindlin_model!(
+    /// Hertz-Mindlin with Luding's reset: as [`MindlinAA`], but after a sliding step the stored
+    /// spring is set so that spring plus dashpot equal the sliding force (LAMMPS `pair granular
+    /// tangential mindlin_rescale/force`). The Hertz counterpart of
+    /// [`ModelAALuding`](crate::ModelAALuding).
+    MindlinAALuding,
+    Keep::Luding
+);
+
+/// The stateless law under Hertz: `xi = v_t t_e` with Mindlin's stiffness at the current contact
+/// radius, then Model AA's limit and sliding rule. Stores nothing. `t_e` comes from the contact's
+/// oscillator linearised at the current overlap ([`elapsed_contact_time`](super::elapsed_contact_time)),
+/// an estimate for a contact that stiffens as it loads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MindlinStateless<F>(pub MindlinParameters<F>);
+
+impl<F: Float> TangentialModel<F> for MindlinStateless<F> {
+    type State = ();
+    const NEEDS_CONTACT_RADIUS: bool = true;
+    const VECTORISES: bool = false;
+
+    #[inline(always)]
+    fn force<M: MathBackend<F>>(
+        &self,
+        _: &(),
+        contact: &TangentialInput<F>,
+    ) -> TangentialOutput<F, ()> {
+        let elapsed = super::elapsed_contact_time::<F, M>(
+            contact.overlap,
+            contact.approach_rate,
+            &contact.oscillator,
+        );
+        let stiffness = self.0.stiffness(contact.contact_radius);
+        let trial =
+            contact.slip_velocity * -(stiffness * elapsed + self.0.dashpot(&contact.oscillator));
+        let (force, sliding) = coulomb::<F, M>(
+            trial,
+            contact.slip_velocity,
+            self.0.limit(contact),
+            Slide::AlongTrial,
+        );
+        TangentialOutput {
+            force,
+            state: (),
+            sliding,
+        }
+    }
+
+    /// As [`Stateless`](crate::Stateless): a dashpot of strength `k_t t_e + eta_t` at the
+    /// stiffest contact, with `t_e` at most `pi / wd`.
+    fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        let oscillator = &design.oscillator;
+        let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
+        let dashpot =
+            self.0.stiffness(design.contact_radius) * longest + self.0.dashpot(oscillator);
+        F::TWO * tangential_mass / dashpot
+    }
+}
