@@ -307,6 +307,18 @@ impl WithContact for WallImpact {
     }
 }
 
+/// A collision of two spheres (and their effective mass): both spheres after they part.
+struct Collide(Sphere<f64>, Sphere<f64>, f64);
+
+impl WithContact for Collide {
+    type Output = [Sphere<f64>; 2];
+    fn run<L: Law<Float = f64>>(self, law: &L) -> [Sphere<f64>; 2] {
+        let dt = step_for(law, self.2);
+        let steps = 40 * STEPS_PER_CONTACT as usize;
+        pair_collision(law, self.0, self.1, dt, steps, |_, _, _| {}).expect("the spheres part")
+    }
+}
+
 /// A sphere of `solid` touching the floor with centre velocity `(v_t, 0, -v_n)` and spin `w_y`.
 fn wall_sphere(solid: &Solid, radius: f64, v_n: f64, v_t: f64, spin_y: f64) -> Sphere<f64> {
     let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, radius), radius, solid.density);
@@ -707,22 +719,6 @@ pub fn test8(contact: Contact, x: f64) -> f64 {
     i.velocity = Vec3::new(pair.speed, 0.0, 0.0);
     // i's contact point (+x side) moves along +z at R w.
     i.angular_velocity = Vec3::new(0.0, -v_s / radius, 0.0);
-    struct Collide(Sphere<f64>, Sphere<f64>, f64);
-    impl WithContact for Collide {
-        type Output = [Sphere<f64>; 2];
-        fn run<L: Law<Float = f64>>(self, law: &L) -> [Sphere<f64>; 2] {
-            let dt = step_for(law, self.2);
-            pair_collision(
-                law,
-                self.0,
-                self.1,
-                dt,
-                40 * STEPS_PER_CONTACT as usize,
-                |_, _, _| {},
-            )
-            .expect("the spheres part")
-        }
-    }
     let [a, b] = pair.with(contact, Collide(i, j, pair.effective_mass));
     // Contact-point velocities along z: i's at +R x, j's at -R x.
     let point_i = a.velocity.z - a.angular_velocity.y * radius;
@@ -743,22 +739,6 @@ pub fn test7(contact: Contact, solid: &Solid, spin: f64) -> (f64, f64) {
     j.velocity = Vec3::new(-0.2, 0.0, 0.0);
     i.angular_velocity = Vec3::new(0.0, spin, 0.0);
     j.angular_velocity = Vec3::new(0.0, -spin, 0.0);
-    struct Collide(Sphere<f64>, Sphere<f64>, f64);
-    impl WithContact for Collide {
-        type Output = [Sphere<f64>; 2];
-        fn run<L: Law<Float = f64>>(self, law: &L) -> [Sphere<f64>; 2] {
-            let dt = step_for(law, self.2);
-            pair_collision(
-                law,
-                self.0,
-                self.1,
-                dt,
-                40 * STEPS_PER_CONTACT as usize,
-                |_, _, _| {},
-            )
-            .expect("the spheres part")
-        }
-    }
     let [a, _] = pair.with(contact, Collide(i, j, pair.effective_mass));
     (a.velocity.z, a.angular_velocity.y)
 }

@@ -175,10 +175,7 @@ impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
     }
 
     fn design_contact(&self, effective_mass: F) -> NormalContact<F> {
-        NormalContact {
-            oscillator: self.oscillator::<F::DefaultBackend>(effective_mass),
-            ..NormalContact::default()
-        }
+        linear_design(self.oscillator::<F::DefaultBackend>(effective_mass))
     }
 
     fn contact_duration(&self, effective_mass: F) -> F {
@@ -250,10 +247,7 @@ impl<F: Float> NormalModel<F> for LinearSpring<F> {
     }
 
     fn design_contact(&self, effective_mass: F) -> NormalContact<F> {
-        NormalContact {
-            oscillator: self.oscillator::<F::DefaultBackend>(effective_mass),
-            ..NormalContact::default()
-        }
+        linear_design(self.oscillator::<F::DefaultBackend>(effective_mass))
     }
 
     fn contact_duration(&self, effective_mass: F) -> F {
@@ -268,5 +262,13 @@ impl<F: Float> NormalModel<F> for LinearSpring<F> {
             / self
                 .oscillator::<F::DefaultBackend>(effective_mass)
                 .natural_frequency
+    }
+}
+
+/// A linear law's stiffest contact is its only one: the oscillator, with no contact radius.
+fn linear_design<F: Float>(oscillator: NormalOscillator<F>) -> NormalContact<F> {
+    NormalContact {
+        oscillator,
+        ..NormalContact::default()
     }
 }
