@@ -2,6 +2,7 @@
 # The soft-sphere LAMMPS plugin, checked inside LAMMPS (run by CI after build.sh):
 #   1. Elghannay & Tafti's Kharaz impact and plate case with fix wall/soft/sphere aa against the
 #      Rust validation run;
+#   1b. Hertz-Mindlin (Chung & Ooi Test 5, two spheres) against LAMMPS's own pair granular;
 #   2. the same physics as LAMMPS's own gran/hooke/history on a granular gas of equal spheres;
 #   3. the reference scene on 1, 2 and 4 MPI ranks, and a stored spring carried between ranks;
 #   4. speed inside the engine against the native style (printed, not asserted);
@@ -71,6 +72,21 @@ for i, line in enumerate(lines):
 print(" ".join(row))
 PY
 }
+
+# 1b. Hertz-Mindlin beside LAMMPS's own pair granular (hertz/material, mindlin_rescale/force):
+# Chung & Ooi's Test 5 as two identical steel spheres. LAMMPS's torque arm is R - delta/2, the
+# kernel's R; the bound covers that.
+hm_ok=0
+hm_worst=0
+for k in 0 1 2 3 4 5; do
+  ours="$(grep "^chung_ooi_test5_$k," "$work/cases/expected.csv" | cut -d, -f3)"
+  theirs="$(cd "$work/cases" && "$lmp" -log none -in "chung_ooi_test5_$k.in" 2>&1 | grep '^RESULT' | cut -d' ' -f2)"
+  difference="$(python3 -c "print(abs(float('$ours') - float('${theirs:-nan}')))")"
+  python3 -c "import sys; sys.exit(0 if float('$difference') <= 0.02 else 1)" || hm_ok=1
+  hm_worst="$(python3 -c "print(max($hm_worst, float('$difference')))")"
+done
+result "hertz-mindlin vs pair granular (Chung & Ooi test 5, psi 0.1-10)" "$hm_ok" \
+  "V_s'/(mu V_n') within $hm_worst of LAMMPS (bound 0.02)"
 
 # 2. The same physics as the native style: a granular gas of 1,000 equal spheres, periodic, no
 # walls (the native gamma_n is per unit mass, so it matches e only for equal masses).

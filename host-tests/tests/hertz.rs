@@ -474,9 +474,11 @@ fn frame_invariant(c: &Collision, angle: f64) -> Result<(), TestCaseError> {
                 let d = turn(x.force_on_j()) - y.force_on_j();
                 // An overlap within rounding of the centre distance (the creeping end of an
                 // e = 0 contact) is only known to its rounding, and so is its force.
+                // Each step's rounding stays in the stored spring and adds up over a long (e = 0)
+                // contact; a wrong rotation would be off by the force itself.
                 if x.overlap > 1e-10 * (a + b) {
                     prop_assert!(
-                        d.norm_squared().sqrt() <= 1e-9 * scale,
+                        d.norm_squared().sqrt() <= 1e-6 * scale,
                         "force differs by {:e}",
                         d.norm_squared().sqrt() / scale
                     );

@@ -2,14 +2,20 @@
 //! runs give for them: the Kharaz impact with Model AA at 5..85 degrees and the plate case, the
 //! same parameters and step as the `validate` run.
 //!
-//! Usage: `lammps_cases DIR PLUGIN`: writes `DIR/kharaz_ANGLE.in`, `DIR/plate.in`, and
-//! `DIR/expected.csv` (`case,e_t_or_u,spin_or_w`).
+//! It also writes Chung & Ooi's Test 5 as two identical steel spheres for LAMMPS's own
+//! `pair granular hertz/material ... tangential mindlin_rescale/force`, the peer of the kernel's
+//! Hertz law with `MindlinAA` (the relative motion of two identical spheres is the sphere-wall
+//! case's), with what the kernel's Test 5 gives for it.
+//!
+//! Usage: `lammps_cases DIR PLUGIN`: writes `DIR/kharaz_ANGLE.in`, `DIR/plate.in`,
+//! `DIR/chung_ooi_test5_K.in` and `DIR/expected.csv` (`case,first,second`).
 
 use std::error::Error;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use host_tests::impact::{Integrator, incoming_sphere};
+use host_tests::validation::chung_ooi::{self, Contact};
 use host_tests::validation::kharaz::{self, Model, TALK};
 use host_tests::validation::plate;
 use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot};
@@ -56,6 +62,32 @@ fn deck(
          print \"RESULT ${{u17}} ${{w17}}\""
     );
     d
+}
+
+/// The `psi` of the LAMMPS Test 5 decks: sticking, partly sliding, and sliding throughout.
+const TEST5_PSI: [f64; 6] = [0.1, 1.0, 2.0, 4.0, 6.0, 10.0];
+
+/// Test 5 at `psi` as two identical steel spheres (R = 10 mm, 7850 kg/m3, E = 208 GPa, nu = 0.3,
+/// mu = 0.3, no damping) approaching at 5 m/s, in LAMMPS's own granular pair style; prints the
+/// relative contact-point `V_s' / (mu V_n')`.
+fn test5_deck(psi: f64) -> String {
+    let half = 0.5 * psi * 0.3 * 5.0;
+    format!(
+        "units si\natom_style sphere\natom_modify map array\nboundary p p p\ncomm_modify vel yes\n\
+         region box block -1 1 -1 1 -1 1\ncreate_box 1 box\n\
+         create_atoms 1 single 0 0 0.0100000001\ncreate_atoms 1 single 0 0 -0.0100000001\n\
+         set atom * diameter 0.02 density 7850\n\
+         pair_style granular\n\
+         pair_coeff * * hertz/material 208e9 0.0 0.3 tangential mindlin_rescale/force NULL 0.0 0.3 damping viscoelastic\n\
+         neighbor 0.001 bin\n\
+         set atom 1 vx {half:e} vz -2.5\nset atom 2 vx {minus:e} vz 2.5\n\
+         fix integrate all nve/sphere\ntimestep 2e-9\n\
+         compute spin all property/atom omegay\n\
+         variable ratio equal ((vx[1]-c_spin[1]*0.01)-(vx[2]+c_spin[2]*0.01))/(0.3*(vz[1]-vz[2]))\n\
+         variable r17 format ratio %.17g\n\
+         thermo_style custom step v_ratio\nthermo 40000\nrun 40000\nprint \"RESULT ${{r17}}\"\n",
+        minus = -half
+    )
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -139,6 +171,15 @@ fn main() -> Result<(), Box<dyn Error>> {
         dir.join("plate.in"),
         deck(&plugin, &wall, geometry, (dt, steps), true),
     )?;
+    for (k, psi) in TEST5_PSI.iter().enumerate() {
+        // Fine steps: LAMMPS runs about 22000 per contact.
+        let ratio = chung_ooi::test5_spheres(Contact::HertzAA, *psi, 8000.0);
+        let _ = writeln!(expected, "chung_ooi_test5_{k},{psi:e},{ratio:e}");
+        std::fs::write(
+            dir.join(format!("chung_ooi_test5_{k}.in")),
+            test5_deck(*psi),
+        )?;
+    }
     std::fs::write(dir.join("expected.csv"), expected)?;
     eprintln!("wrote the decks and expected.csv into {}", dir.display());
     Ok(())

@@ -308,13 +308,13 @@ impl WithContact for WallImpact {
 }
 
 /// A collision of two spheres (and their effective mass): both spheres after they part.
-struct Collide(Sphere<f64>, Sphere<f64>, f64);
+struct Collide(Sphere<f64>, Sphere<f64>, f64, f64);
 
 impl WithContact for Collide {
     type Output = [Sphere<f64>; 2];
     fn run<L: Law<Float = f64>>(self, law: &L) -> [Sphere<f64>; 2] {
-        let dt = step_for(law, self.2);
-        let steps = 40 * STEPS_PER_CONTACT as usize;
+        let dt = step_with(law, self.2, self.3);
+        let steps = 40 * self.3 as usize;
         pair_collision(law, self.0, self.1, dt, steps, |_, _, _| {}).expect("the spheres part")
     }
 }
@@ -681,6 +681,32 @@ pub fn test5(contact: Contact, psi: f64) -> f64 {
     contact_point_velocity(&after) / (pair.friction * after.velocity.z)
 }
 
+/// Test 5 at `psi` as two identical steel spheres (R = 10 mm) approaching at `V_n` = 5 m/s with
+/// relative tangential speed `psi mu V_n`: the relative contact-point `V_s' / (mu V_n')`, both
+/// along the initial axes. The relative motion is Test 5's while the spheres' lateral travel in
+/// contact is small against their radius (`psi` up to about 4); beyond it the line of centres
+/// turns during contact. The case LAMMPS runs beside the kernel (`examples/lammps/check.sh`).
+///
+/// At `steps_per_contact` steps per contact duration (symplectic Euler, first order).
+pub fn test5_spheres(contact: Contact, psi: f64, steps_per_contact: f64) -> f64 {
+    let radius = TEST5_RADIUS;
+    let pair = Pair::identical(&STEEL, radius, 5.0, 1.0, 0.3);
+    let half = 0.5 * psi * pair.friction * pair.speed;
+    let mut i = sphere_of(&STEEL, radius);
+    let mut j = sphere_of(&STEEL, radius);
+    j.position = Vec3::new(0.0, 0.0, 2.0 * radius);
+    i.velocity = Vec3::new(-half, 0.0, 2.5);
+    j.velocity = Vec3::new(half, 0.0, -2.5);
+    let [a, b] = pair.with(
+        contact,
+        Collide(i, j, pair.effective_mass, steps_per_contact),
+    );
+    // i's contact point is at +R z, j's at -R z: v_x + w_y z.
+    let point_i = a.velocity.x + a.angular_velocity.y * radius;
+    let point_j = b.velocity.x - b.angular_velocity.y * radius;
+    (point_j - point_i) / (pair.friction * (b.velocity.z - a.velocity.z).abs())
+}
+
 /// Rigid-body theory for Test 5 (e = 1): `(psi - 7)` in gross sliding, `psi >= 7`; `None` below.
 pub fn test5_rigid(psi: f64) -> Option<f64> {
     (psi >= 7.0).then_some(psi - 7.0)
@@ -719,7 +745,10 @@ pub fn test8(contact: Contact, x: f64) -> f64 {
     i.velocity = Vec3::new(pair.speed, 0.0, 0.0);
     // i's contact point (+x side) moves along +z at R w.
     i.angular_velocity = Vec3::new(0.0, -v_s / radius, 0.0);
-    let [a, b] = pair.with(contact, Collide(i, j, pair.effective_mass));
+    let [a, b] = pair.with(
+        contact,
+        Collide(i, j, pair.effective_mass, STEPS_PER_CONTACT),
+    );
     // Contact-point velocities along z: i's at +R x, j's at -R x.
     let point_i = a.velocity.z - a.angular_velocity.y * radius;
     let point_j = b.velocity.z + b.angular_velocity.y * radius;
@@ -739,7 +768,10 @@ pub fn test7(contact: Contact, solid: &Solid, spin: f64) -> (f64, f64) {
     j.velocity = Vec3::new(-0.2, 0.0, 0.0);
     i.angular_velocity = Vec3::new(0.0, spin, 0.0);
     j.angular_velocity = Vec3::new(0.0, -spin, 0.0);
-    let [a, _] = pair.with(contact, Collide(i, j, pair.effective_mass));
+    let [a, _] = pair.with(
+        contact,
+        Collide(i, j, pair.effective_mass, STEPS_PER_CONTACT),
+    );
     (a.velocity.z, a.angular_velocity.y)
 }
 
