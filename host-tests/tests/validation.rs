@@ -132,3 +132,10 @@ fn chung_ooi_tests_4_to_8_meet_rigid_body_theory_in_gross_sliding() {
     }
     assert_eq!(case.table("chung_ooi_test5").column("hertz_aa").len(), 48);
 }
+
+#[test]
+fn rolling_resistance_stops_holds_and_accelerates_as_the_closed_forms() {
+    let case = host_tests::validation::rolling::case(|_| {});
+    assert_all_pass(&case);
+    assert_eq!(case.checks.len(), 6);
+}

@@ -20,6 +20,7 @@ use crate::float::Float;
 use crate::geometry::Separation;
 use crate::law::{ContactForces, ContactLaw, Interaction};
 use crate::normal::NormalModel;
+use crate::rolling::RollingModel;
 use crate::rotation::Rotation;
 use crate::tangential::{ContactState, TangentialModel};
 use crate::vector::Vec3;
@@ -303,10 +304,10 @@ fn select<T>(condition: bool, a: T, b: T) -> T {
 
 /// Evaluates a block; see [`BoundLaw::sphere_pairs`].
 #[inline(always)]
-pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
-    bound: &mut BoundLaw<'_, ContactLaw<F, Nm, T, M, R>>,
+pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
+    bound: &mut BoundLaw<'_, ContactLaw<F, Nm, T, M, R, Ro>>,
     block: &PairBlock<F, N>,
-    states: &mut [T::State; N],
+    states: &mut [Ro::State<T::State>; N],
     out: &mut ContactBlock<F, N>,
 ) where
     F: Float,
@@ -314,6 +315,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
     T: TangentialModel<F>,
     M: MathBackend<F>,
     R: Rotation,
+    Ro: RollingModel<F>,
 {
     let (law, time_step) = (bound.law(), bound.time_step());
     let untouched = ContactForces {
@@ -358,7 +360,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, const N: usize>(
         let status = Status::of_pair(&i, &j, &separation, finite);
         let touching = status == Status::TOUCHING;
         let apart = status == Status::APART;
-        *state = select(touching, next, select(apart, T::State::default(), *state));
+        *state = select(touching, next, select(apart, Default::default(), *state));
         out.set(lane, &select(touching, forces, untouched), status);
     }
     *states = kept;

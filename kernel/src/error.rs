@@ -30,6 +30,12 @@ pub enum Parameter {
     PoissonRatio,
     /// An impact speed.
     Speed,
+    /// The rolling-resistance coefficient `mu_r`.
+    RollingFriction,
+    /// The rolling stiffness `k_r`.
+    RollingStiffness,
+    /// The rolling dashpot `eta_r`.
+    RollingDamping,
 }
 
 /// A parameter rejected by a constructor.

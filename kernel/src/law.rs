@@ -11,6 +11,7 @@ use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
 use crate::normal::{NormalModel, NormalOscillator};
+use crate::rolling::{NoRolling, RollingInput, RollingModel};
 use crate::rotation::{NonRotating, Rotating, Rotation};
 use crate::tangential::{ContactState, TangentialInput, TangentialModel};
 use crate::time_step::TimeStep;
@@ -48,9 +49,17 @@ use crate::vector::Vec3;
 /// assert_eq!(contact.torque_on_i, Vec3::ZERO);
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct ContactLaw<F: Float, N, T, M = <F as Float>::DefaultBackend, R = Rotating> {
+pub struct ContactLaw<
+    F: Float,
+    N,
+    T,
+    M = <F as Float>::DefaultBackend,
+    R = Rotating,
+    Ro = NoRolling,
+> {
     normal: N,
     tangential: T,
+    rolling: Ro,
     lever_arm: LeverArm,
     slots: Slots<F, M, R>,
 }
@@ -159,38 +168,59 @@ impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
         Self {
             normal,
             tangential,
+            rolling: NoRolling,
             lever_arm: LeverArm::Radius,
             slots: PhantomData,
         }
     }
 }
 
-impl<F, N, T, M, R> ContactLaw<F, N, T, M, R>
+impl<F, N, T, M, R, Ro> ContactLaw<F, N, T, M, R, Ro>
 where
     F: Float,
     N: NormalModel<F>,
     T: TangentialModel<F>,
     M: MathBackend<F>,
     R: Rotation,
+    Ro: RollingModel<F>,
 {
     /// The same law computing its per-contact math with backend `B`.
-    pub fn with_backend<B: MathBackend<F>>(self) -> ContactLaw<F, N, T, B, R> {
+    pub fn with_backend<B: MathBackend<F>>(self) -> ContactLaw<F, N, T, B, R, Ro> {
         ContactLaw {
             normal: self.normal,
             tangential: self.tangential,
+            rolling: self.rolling,
             lever_arm: self.lever_arm,
             slots: PhantomData,
         }
     }
 
     /// The same law for spheres that do not rotate.
-    pub fn without_rotation(self) -> ContactLaw<F, N, T, M, NonRotating> {
+    pub fn without_rotation(self) -> ContactLaw<F, N, T, M, NonRotating, Ro> {
         ContactLaw {
             normal: self.normal,
             tangential: self.tangential,
+            rolling: self.rolling,
             lever_arm: self.lever_arm,
             slots: PhantomData,
         }
+    }
+
+    /// The same law with rolling resistance `rolling` (see [`crate::rolling`]). A law that does
+    /// not rotate has no rolling to resist: the slot then only keeps its state.
+    pub fn with_rolling<Q: RollingModel<F>>(self, rolling: Q) -> ContactLaw<F, N, T, M, R, Q> {
+        ContactLaw {
+            normal: self.normal,
+            tangential: self.tangential,
+            rolling,
+            lever_arm: self.lever_arm,
+            slots: PhantomData,
+        }
+    }
+
+    /// The rolling-resistance slot.
+    pub fn rolling(&self) -> &Ro {
+        &self.rolling
     }
 
     /// The same law with a different lever arm (see [`LeverArm`]).
@@ -241,6 +271,7 @@ where
         self.normal
             .critical_time_step(effective_mass)
             .min_of(tangential)
+            .min_of(self.rolling.critical_time_step())
     }
 
     /// A step of 1/50 of the contact duration (MFiX's default), and never more than a fifth of
@@ -307,7 +338,7 @@ where
         &self,
         i: &Sphere<F>,
         j: &Sphere<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         checked::check(i)?;
@@ -328,7 +359,7 @@ where
         &self,
         sphere: &Sphere<F>,
         wall: &Wall<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         checked::check(sphere)?;
@@ -350,12 +381,12 @@ where
         &self,
         frame: Option<ContactFrame<F>>,
         oscillator: impl FnOnce() -> NormalOscillator<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         match frame {
             None => {
-                *state = T::State::default();
+                *state = Default::default();
                 Ok(Interaction::Apart)
             }
             Some(frame) => self.resolve(frame, &oscillator(), state, time_step),
@@ -367,7 +398,7 @@ where
         &self,
         frame: ContactFrame<F>,
         oscillator: &NormalOscillator<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         let (forces, next_state) = self.touching(&frame, oscillator, state, time_step);
@@ -387,9 +418,9 @@ where
         &self,
         frame: &ContactFrame<F>,
         oscillator: &NormalOscillator<F>,
-        state: &T::State,
+        state: &Ro::State<T::State>,
         time_step: TimeStep<F>,
-    ) -> (ContactForces<F>, T::State) {
+    ) -> (ContactForces<F>, Ro::State<T::State>) {
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
         let normal = self.normal.contact::<M>(
@@ -410,7 +441,7 @@ where
             torque_on_j: Vec3::ZERO,
             sliding: false,
         };
-        let mut next_state = *state;
+        let mut next_tangential = *Ro::tangential(state);
         if T::ACTIVE {
             let mut slip_velocity = frame.velocity - n * normal_velocity;
             if R::ROTATES {
@@ -428,33 +459,66 @@ where
                 contact_radius: normal.contact_radius,
                 time_step: time_step.seconds(),
             };
-            let output = self.tangential.force::<M>(state, &input);
+            let output = self.tangential.force::<M>(Ro::tangential(state), &input);
             forces.tangential_force = output.force;
             forces.slip_velocity = slip_velocity;
             forces.sliding = output.sliding;
-            next_state = output.state;
+            next_tangential = output.state;
             if R::ROTATES {
                 let moment = n.cross(output.force);
                 forces.torque_on_i = moment * -frame.arm_i;
                 forces.torque_on_j = moment * -frame.arm_j;
             }
         }
+        if !Ro::ACTIVE {
+            let (_, next_state) = self.rolling.resist::<M, _>(
+                state,
+                next_tangential,
+                &RollingInput {
+                    normal: n,
+                    relative_spin: Vec3::ZERO,
+                    normal_force,
+                    effective_radius: frame.effective_radius,
+                    time_step: time_step.seconds(),
+                },
+            );
+            return (forces, next_state);
+        }
+        let relative_spin = if R::ROTATES {
+            frame.angular_velocity_i - frame.angular_velocity_j
+        } else {
+            Vec3::ZERO
+        };
+        let (torque, next_state) = self.rolling.resist::<M, _>(
+            state,
+            next_tangential,
+            &RollingInput {
+                normal: n,
+                relative_spin,
+                normal_force,
+                effective_radius: frame.effective_radius,
+                time_step: time_step.seconds(),
+            },
+        );
+        forces.torque_on_i += torque;
+        forces.torque_on_j -= torque;
         (forces, next_state)
     }
 }
 
-impl<F: Float, N, T, M, R> sealed::Sealed for ContactLaw<F, N, T, M, R> {}
+impl<F: Float, N, T, M, R, Ro> sealed::Sealed for ContactLaw<F, N, T, M, R, Ro> {}
 
-impl<F, N, T, M, R> Law for ContactLaw<F, N, T, M, R>
+impl<F, N, T, M, R, Ro> Law for ContactLaw<F, N, T, M, R, Ro>
 where
     F: Float,
     N: NormalModel<F>,
     T: TangentialModel<F>,
     M: MathBackend<F>,
     R: Rotation,
+    Ro: RollingModel<F>,
 {
     type Float = F;
-    type State = T::State;
+    type State = Ro::State<T::State>;
     const VECTORISES: bool = T::VECTORISES && cfg!(target_feature = "avx");
 
     fn time_step(
@@ -478,7 +542,7 @@ where
         bound: &mut BoundLaw<'_, Self>,
         i: &CheckedSphere<F>,
         j: &CheckedSphere<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
         let law = bound.law();
         let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
@@ -496,7 +560,7 @@ where
     fn evaluate_pairs<const LANES: usize>(
         bound: &mut BoundLaw<'_, Self>,
         block: &PairBlock<F, LANES>,
-        states: &mut [T::State; LANES],
+        states: &mut [Ro::State<T::State>; LANES],
         out: &mut ContactBlock<F, LANES>,
     ) {
         batch::sphere_pairs(bound, block, states, out);
@@ -507,7 +571,7 @@ where
         bound: &mut BoundLaw<'_, Self>,
         sphere: &CheckedSphere<F>,
         wall: &Wall<F>,
-        state: &mut T::State,
+        state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
         let law = bound.law();
         let frame = geometry::sphere_wall(sphere, wall, law.lever_arm);

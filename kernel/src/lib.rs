@@ -123,6 +123,9 @@
 //!   impact rebounds at `e` (within 0.5 %) at any speed; its force follows Hertz's closed form
 //!   and the Mindlin laws keep the Coulomb limit, create no energy, are symmetric and frame
 //!   invariant. (`validation.rs`, Chung & Ooi Tests 1-3; `hertz.rs`)
+//! - **Rolling resistance** stays within `mu_r R* |F_n|`, acts as a couple (i and j receive
+//!   opposite torques) and creates no energy; [`ElasticPlasticRolling`] holds a sphere on a slope
+//!   below its rolling angle. (`rolling.rs`; `validation.rs`)
 //!
 //! ## Engines: the checked fast path
 //!
@@ -167,6 +170,7 @@ mod law;
 mod material;
 pub mod motion;
 mod normal;
+pub mod rolling;
 mod rotation;
 mod store;
 pub mod tangential;
@@ -188,6 +192,7 @@ pub use normal::{
     Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
     NormalOscillator,
 };
+pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use store::{ContactHistory, ContactKey};
 pub use tangential::{

@@ -13,7 +13,7 @@ use host_tests::analytic::{rigid_body_oblique, rolling_onset};
 use host_tests::data;
 use host_tests::plot::{Axes, Mark, Series, chart};
 use host_tests::validation::kharaz::{self, Model, TALK};
-use host_tests::validation::{CaseOutput, Cell, Table, chung_ooi, normal, plate};
+use host_tests::validation::{CaseOutput, Cell, Table, chung_ooi, normal, plate, rolling};
 
 fn main() -> ExitCode {
     match run() {
@@ -64,6 +64,10 @@ fn run() -> Result<bool, Box<dyn Error>> {
         (
             "Sphere sliding on a plate (docs/physics.md, section 5.3)",
             plate::case(progress),
+        ),
+        (
+            "Rolling resistance (docs/physics.md, section 5.6)",
+            rolling::case(progress),
         ),
         (
             "Chung & Ooi Tests 1 and 2: elastic impacts (docs/physics.md, section 5.5)",

@@ -666,6 +666,10 @@ pub const ELASTIC_SLIDING_TOLERANCE: f64 = 1e-4;
 /// ([`TangentialParameters`]' note: 6.7 % more friction impulse than rigid-body theory).
 pub const DAMPED_SLIDING_TOLERANCE: f64 = 0.04;
 
+/// The factor on `G*` of the sensitivity note: the stiffness ratio of LAMMPS 20220106's
+/// `fix wall/gran hertz/material` wall.
+pub const SOFTENED_SHEAR: f64 = 0.47;
+
 /// Test 5's pair: steel on a rigid plane, 5 m/s, e = 1, mu = 0.3.
 pub fn test5_pair() -> Pair {
     Pair::on_wall(&STEEL, TEST5_RADIUS, 5.0, 1.0, 0.3)
@@ -674,7 +678,11 @@ const TEST5_RADIUS: f64 = 0.01;
 
 /// Test 5 at `psi = V_s / (mu V_n)`: `V_s' / (mu V_n')` of the contact point.
 pub fn test5(contact: Contact, psi: f64) -> f64 {
-    let pair = test5_pair();
+    test5_of(&test5_pair(), contact, psi)
+}
+
+/// Test 5 for `pair` (Test 5's but for what a sensitivity study changes).
+pub fn test5_of(pair: &Pair, contact: Contact, psi: f64) -> f64 {
     let v_t = psi * pair.friction * pair.speed;
     let sphere = wall_sphere(&STEEL, TEST5_RADIUS, pair.speed, v_t, 0.0);
     let after = pair.with(contact, WallImpact { sphere });
@@ -720,7 +728,11 @@ pub fn test6_pair() -> Pair {
 /// Test 6 at `x = 3.5 mu (1 + e) V_n / V_s`: `beta = -(contact-point velocity after) / V_s`, the
 /// sphere spinning so that its contact point moves at `V_s = R w0` with no centre velocity.
 pub fn test6(contact: Contact, x: f64) -> f64 {
-    let pair = test6_pair();
+    test6_of(&test6_pair(), contact, x)
+}
+
+/// Test 6 for `pair` (Test 6's but for what a sensitivity study changes).
+pub fn test6_of(pair: &Pair, contact: Contact, x: f64) -> f64 {
     let v_s = 3.5 * pair.friction * (1.0 + pair.restitution) * pair.speed / x;
     let sphere = wall_sphere(&AL_ALLOY, 0.1, pair.speed, 0.0, -v_s / 0.1);
     let after = pair.with(contact, WallImpact { sphere });
@@ -857,6 +869,24 @@ pub fn oblique(mut progress: impl FnMut(&str)) -> CaseOutput {
         ELASTIC_SLIDING_TOLERANCE,
     );
     out.tables.push(("chung_ooi_test5_distances".into(), t5));
+
+    // What the steel curve asks of the spring: Mindlin's at 0.47 of its stiffness.
+    let soft = |mut pair: Pair| {
+        pair.effective_shear_modulus *= SOFTENED_SHEAR;
+        pair
+    };
+    let (soft5, soft6) = (soft(test5_pair()), soft(test6_pair()));
+    let steel = data::rows("chung_ooi2011_test5_steel.csv");
+    let al = data::rows("chung_ooi2011_test6_al_alloy.csv");
+    let rms5 = rms(steel
+        .iter()
+        .map(|p| (test5_of(&soft5, Contact::HertzAA, p[0]), p[1])));
+    let rms6 = rms(al
+        .iter()
+        .map(|p| (test6_of(&soft6, Contact::HertzAA, p[0]), p[1])));
+    out.notes.push(format!(
+        "hertz_aa with G* x {SOFTENED_SHEAR} (k_t/k_n 0.39 instead of 0.82): RMS {rms5:.3} from the Test 5 steel curve, {rms6:.3} from the Test 6 Al alloy curve"
+    ));
 
     progress("Chung & Ooi Test 6");
     let xs = log_spaced(0.15, 25.0, 48);
