@@ -17,10 +17,12 @@ module soft_sphere
   type, bind(c) :: ss_params_f64
     integer(c_int32_t) :: model
     real(c_double) :: normal_stiffness, restitution, tangential_stiffness, dashpot_ratio, &
-                      friction, time_step, smallest_effective_mass
+                      friction, time_step, smallest_effective_mass, effective_modulus, &
+                      effective_shear_modulus, largest_impact_speed, largest_effective_radius
   end type
   type, bind(c) :: ss_state_f64
-    type(ss_vec3_f64) :: displacement
+    type(ss_vec3_f64) :: displacement, spring_force
+    real(c_double) :: contact_radius
   end type
   type, bind(c) :: ss_forces_f64
     integer(c_int32_t) :: touching, sliding
@@ -78,7 +80,8 @@ program impact
   integer(c_int32_t) :: code
 
   mass = (4d0 / 3d0) * pi * radius * radius * radius * density
-  params = ss_params_f64(SS_MODEL_AA, 1000d0, 0.98d0, 860d0, 0d0, 0.092d0, 0d0, mass)
+  params = ss_params_f64(SS_MODEL_AA, 1000d0, 0.98d0, 860d0, 0d0, 0.092d0, 0d0, mass, &
+                         0d0, 0d0, 0d0, 0d0)
   code = ss_contact_duration_f64(params, mass, duration)
   params%time_step = duration / 50d0
   code = ss_law_new_f64(params, law)
@@ -88,7 +91,7 @@ program impact
   sphere = ss_sphere_f64(ss_vec3_f64(0d0, 0d0, radius), &
                          ss_vec3_f64(speed * sin(theta), 0d0, -speed * cos(theta)), zero, radius, mass)
   floor_wall = ss_wall_f64(zero, ss_vec3_f64(0d0, 0d0, 1d0), zero)
-  state = ss_state_f64(zero)
+  state = ss_state_f64(zero, zero, 0d0)
   incoming = sphere%velocity%x
   touched = .false.
   do

@@ -105,6 +105,26 @@
 #define SS_MODEL_FRICTIONLESS 3
 
 /**
+ * Hertz, no friction.
+ */
+#define SS_MODEL_HERTZ_FRICTIONLESS 4
+
+/**
+ * Hertz with the stateless Mindlin law.
+ */
+#define SS_MODEL_HERTZ_STATELESS 5
+
+/**
+ * Hertz with Mindlin's stored spring and Model AA's cap.
+ */
+#define SS_MODEL_HERTZ_AA 6
+
+/**
+ * Hertz with Mindlin's stored spring and Luding's reset.
+ */
+#define SS_MODEL_HERTZ_AA_LUDING 7
+
+/**
  * No parameter was rejected.
  */
 #define SS_PARAMETER_NONE 0
@@ -150,6 +170,26 @@
 #define SS_PARAMETER_MODEL 8
 
 /**
+ * An elastic modulus (`effective_modulus`, `effective_shear_modulus`, or a material's).
+ */
+#define SS_PARAMETER_MODULUS 9
+
+/**
+ * A material's Poisson's ratio.
+ */
+#define SS_PARAMETER_POISSON_RATIO 10
+
+/**
+ * `largest_impact_speed`.
+ */
+#define SS_PARAMETER_SPEED 11
+
+/**
+ * `largest_effective_radius`.
+ */
+#define SS_PARAMETER_RADIUS 12
+
+/**
  * A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
  * normal oscillator of the last pair of masses and the last wall it checked, so a host that
  * calls it over a neighbour list derives each once; the results are the same bits as the
@@ -174,6 +214,34 @@ typedef struct ss_law_f32 ss_law_f32;
  * A validated contact law and its checked time step (opaque to C).
  */
 typedef struct ss_law_f64 ss_law_f64;
+
+/**
+ * An elastic material, for `ss_effective_moduli_*`.
+ */
+typedef struct {
+  /**
+   * Young's modulus (Pa).
+   */
+  double youngs_modulus;
+  /**
+   * Poisson's ratio, in (-1, 0.5].
+   */
+  double poisson_ratio;
+} ss_material_f64;
+
+/**
+ * An elastic material, for `ss_effective_moduli_*`.
+ */
+typedef struct {
+  /**
+   * Young's modulus (Pa).
+   */
+  float youngs_modulus;
+  /**
+   * Poisson's ratio, in (-1, 0.5].
+   */
+  float poisson_ratio;
+} ss_material_f32;
 
 /**
  * Law parameters, validated once by the constructor.
@@ -212,6 +280,23 @@ typedef struct {
    * The smallest effective mass of any contact the step is checked for (kg).
    */
   double smallest_effective_mass;
+  /**
+   * `SS_MODEL_HERTZ_*`: Hertz's effective modulus `E*` (Pa), in place of `normal_stiffness`.
+   */
+  double effective_modulus;
+  /**
+   * `SS_MODEL_HERTZ_*` with friction: Mindlin's effective shear modulus `G*` (Pa), in place of
+   * `tangential_stiffness`.
+   */
+  double effective_shear_modulus;
+  /**
+   * `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+   */
+  double largest_impact_speed;
+  /**
+   * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+   */
+  double largest_effective_radius;
 } ss_params_f64;
 
 /**
@@ -263,9 +348,17 @@ typedef struct {
  */
 typedef struct {
   /**
-   * Stored tangential displacement (m); unused by the stateless law.
+   * Stored tangential displacement (m) of `SS_MODEL_AA` and `SS_MODEL_AA_LUDING`.
    */
   ss_vec3_f64 displacement;
+  /**
+   * Stored tangential spring force (N) of `SS_MODEL_HERTZ_AA` and `SS_MODEL_HERTZ_AA_LUDING`.
+   */
+  ss_vec3_f64 spring_force;
+  /**
+   * The contact radius (m) at which `SS_MODEL_HERTZ_AA*` last updated `spring_force`.
+   */
+  double contact_radius;
 } ss_state_f64;
 
 /**
@@ -373,8 +466,10 @@ typedef struct {
 } ss_sphere_arrays_f64;
 
 /**
- * Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
- * `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+ * Per-contact states as arrays: element `k` holds what `ss_state_*` holds for pair `k`. A law
+ * reads only its own arrays (`SS_MODEL_AA*`: the displacement; `SS_MODEL_HERTZ_AA*`: the spring
+ * force and the contact radius); the others, and all of them for the stateless and frictionless
+ * laws, may be null.
  */
 typedef struct {
   /**
@@ -389,6 +484,22 @@ typedef struct {
    * Displacement z.
    */
   double *displacement_z;
+  /**
+   * Spring force x.
+   */
+  double *spring_force_x;
+  /**
+   * Spring force y.
+   */
+  double *spring_force_y;
+  /**
+   * Spring force z.
+   */
+  double *spring_force_z;
+  /**
+   * Contact radius.
+   */
+  double *contact_radius;
 } ss_state_arrays_f64;
 
 /**
@@ -491,6 +602,23 @@ typedef struct {
    * The smallest effective mass of any contact the step is checked for (kg).
    */
   float smallest_effective_mass;
+  /**
+   * `SS_MODEL_HERTZ_*`: Hertz's effective modulus `E*` (Pa), in place of `normal_stiffness`.
+   */
+  float effective_modulus;
+  /**
+   * `SS_MODEL_HERTZ_*` with friction: Mindlin's effective shear modulus `G*` (Pa), in place of
+   * `tangential_stiffness`.
+   */
+  float effective_shear_modulus;
+  /**
+   * `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+   */
+  float largest_impact_speed;
+  /**
+   * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+   */
+  float largest_effective_radius;
 } ss_params_f32;
 
 /**
@@ -542,9 +670,17 @@ typedef struct {
  */
 typedef struct {
   /**
-   * Stored tangential displacement (m); unused by the stateless law.
+   * Stored tangential displacement (m) of `SS_MODEL_AA` and `SS_MODEL_AA_LUDING`.
    */
   ss_vec3_f32 displacement;
+  /**
+   * Stored tangential spring force (N) of `SS_MODEL_HERTZ_AA` and `SS_MODEL_HERTZ_AA_LUDING`.
+   */
+  ss_vec3_f32 spring_force;
+  /**
+   * The contact radius (m) at which `SS_MODEL_HERTZ_AA*` last updated `spring_force`.
+   */
+  float contact_radius;
 } ss_state_f32;
 
 /**
@@ -652,8 +788,10 @@ typedef struct {
 } ss_sphere_arrays_f32;
 
 /**
- * Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
- * `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+ * Per-contact states as arrays: element `k` holds what `ss_state_*` holds for pair `k`. A law
+ * reads only its own arrays (`SS_MODEL_AA*`: the displacement; `SS_MODEL_HERTZ_AA*`: the spring
+ * force and the contact radius); the others, and all of them for the stateless and frictionless
+ * laws, may be null.
  */
 typedef struct {
   /**
@@ -668,6 +806,22 @@ typedef struct {
    * Displacement z.
    */
   float *displacement_z;
+  /**
+   * Spring force x.
+   */
+  float *spring_force_x;
+  /**
+   * Spring force y.
+   */
+  float *spring_force_y;
+  /**
+   * Spring force z.
+   */
+  float *spring_force_z;
+  /**
+   * Contact radius.
+   */
+  float *contact_radius;
 } ss_state_arrays_f32;
 
 /**
@@ -736,6 +890,31 @@ typedef struct {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Hertz's `E*` and Mindlin's `G*` of a contact between materials `*i` and `*j` (`j` null: a
+ * rigid body, such as a wall), for `ss_params_f64`. Returns `SS_OK`, `SS_ERR_NULL`, or the
+ * material's error (`SS_ERR_NOT_POSITIVE`, `SS_ERR_NON_FINITE_PARAMETER`,
+ * `SS_ERR_POISSON_RATIO`); the outputs are written only on success.
+ *
+ * # Safety
+ * Non-null pointers must be valid.
+ */
+int32_t ss_effective_moduli_f64(const ss_material_f64 *i,
+                                const ss_material_f64 *j,
+                                double *effective_modulus,
+                                double *effective_shear_modulus);
+
+/**
+ * As `ss_effective_moduli_f64`, in f32.
+ *
+ * # Safety
+ * Non-null pointers must be valid.
+ */
+int32_t ss_effective_moduli_f32(const ss_material_f32 *i,
+                                const ss_material_f32 *j,
+                                float *effective_modulus,
+                                float *effective_shear_modulus);
 
 /**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching

@@ -3,7 +3,9 @@
 //! outputs are written only on success, so nothing the caller gave is half-updated.
 //!
 //! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law, Model AA, Model
-//! AA with Luding's reset and frictionless contacts (`SS_MODEL_*`). The per-contact state
+//! AA with Luding's reset and frictionless contacts over the linear spring-dashpot, and the same
+//! four over Hertz with Mindlin's tangential spring (`SS_MODEL_HERTZ_*`; `ss_effective_moduli_*`
+//! gives their `E*` and `G*` from two materials). The per-contact state
 //! (`ss_state_*`) is the caller's: zero it for a new contact, keep it while the contact lasts (the
 //! kernel resets it when the pair separates).
 //!
@@ -21,10 +23,11 @@
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless,
-    Interaction, Law, LinearSpringDashpot, MathBackend, ModelAA, ModelAALuding, Parameter,
-    ParameterError, Sphere, SpringDisplacement, Stateless, Std, TangentialParameters, TimeStep,
-    Vec3, Wall,
+    BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless, Hertz,
+    HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MindlinAA,
+    MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, ModelAA, ModelAALuding,
+    Parameter, ParameterError, Sphere, SpringDisplacement, Stateless, Std, TangentialParameters,
+    TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -66,6 +69,14 @@ pub const SS_MODEL_AA: i32 = 1;
 pub const SS_MODEL_AA_LUDING: i32 = 2;
 /// No friction: normal force only (no tangential force, no torque, no state).
 pub const SS_MODEL_FRICTIONLESS: i32 = 3;
+/// Hertz, no friction.
+pub const SS_MODEL_HERTZ_FRICTIONLESS: i32 = 4;
+/// Hertz with the stateless Mindlin law.
+pub const SS_MODEL_HERTZ_STATELESS: i32 = 5;
+/// Hertz with Mindlin's stored spring and Model AA's cap.
+pub const SS_MODEL_HERTZ_AA: i32 = 6;
+/// Hertz with Mindlin's stored spring and Luding's reset.
+pub const SS_MODEL_HERTZ_AA_LUDING: i32 = 7;
 
 /// No parameter was rejected.
 pub const SS_PARAMETER_NONE: i32 = 0;
@@ -85,6 +96,14 @@ pub const SS_PARAMETER_TIME_STEP: i32 = 6;
 pub const SS_PARAMETER_MASS: i32 = 7;
 /// The model code.
 pub const SS_PARAMETER_MODEL: i32 = 8;
+/// An elastic modulus (`effective_modulus`, `effective_shear_modulus`, or a material's).
+pub const SS_PARAMETER_MODULUS: i32 = 9;
+/// A material's Poisson's ratio.
+pub const SS_PARAMETER_POISSON_RATIO: i32 = 10;
+/// `largest_impact_speed`.
+pub const SS_PARAMETER_SPEED: i32 = 11;
+/// `largest_effective_radius`.
+pub const SS_PARAMETER_RADIUS: i32 = 12;
 
 /// Which parameter `error` is about, as an `SS_PARAMETER_*` code.
 fn rejected_parameter(error: ParameterError) -> i32 {
@@ -105,6 +124,10 @@ fn rejected_parameter(error: ParameterError) -> i32 {
         Parameter::DashpotRatio => SS_PARAMETER_DASHPOT_RATIO,
         Parameter::Friction => SS_PARAMETER_FRICTION,
         Parameter::TimeStep => SS_PARAMETER_TIME_STEP,
+        Parameter::Modulus => SS_PARAMETER_MODULUS,
+        Parameter::PoissonRatio => SS_PARAMETER_POISSON_RATIO,
+        Parameter::Speed => SS_PARAMETER_SPEED,
+        Parameter::Radius => SS_PARAMETER_RADIUS,
         _ => SS_PARAMETER_MASS,
     }
 }
@@ -139,6 +162,10 @@ enum AnyLaw<F: Float> {
     ModelAA(ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>),
     ModelAALuding(ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>),
     Frictionless(ContactLaw<F, LinearSpringDashpot<F>, Frictionless>),
+    HertzStateless(ContactLaw<F, Hertz<F>, MindlinStateless<F>>),
+    HertzAA(ContactLaw<F, Hertz<F>, MindlinAA<F>>),
+    HertzAALuding(ContactLaw<F, Hertz<F>, MindlinAALuding<F>>),
+    HertzFrictionless(ContactLaw<F, Hertz<F>, Frictionless>),
 }
 
 /// `$body` with `$law` bound to the law inside an [`AnyLaw`] or an [`AnyBound`], whichever it is
@@ -150,6 +177,10 @@ macro_rules! each_law {
             $kind::ModelAA($law) => $body,
             $kind::ModelAALuding($law) => $body,
             $kind::Frictionless($law) => $body,
+            $kind::HertzStateless($law) => $body,
+            $kind::HertzAA($law) => $body,
+            $kind::HertzAALuding($law) => $body,
+            $kind::HertzFrictionless($law) => $body,
         }
     };
 }
@@ -161,6 +192,10 @@ enum AnyBound<F: Float> {
     ModelAA(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>>),
     ModelAALuding(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>>),
     Frictionless(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, Frictionless>>),
+    HertzStateless(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinStateless<F>>>),
+    HertzAA(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinAA<F>>>),
+    HertzAALuding(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinAALuding<F>>>),
+    HertzFrictionless(BoundLaw<'static, ContactLaw<F, Hertz<F>, Frictionless>>),
 }
 
 /// A vector of three components.
@@ -252,14 +287,37 @@ pub struct ss_params<F> {
     pub time_step: F,
     /// The smallest effective mass of any contact the step is checked for (kg).
     pub smallest_effective_mass: F,
+    /// `SS_MODEL_HERTZ_*`: Hertz's effective modulus `E*` (Pa), in place of `normal_stiffness`.
+    pub effective_modulus: F,
+    /// `SS_MODEL_HERTZ_*` with friction: Mindlin's effective shear modulus `G*` (Pa), in place of
+    /// `tangential_stiffness`.
+    pub effective_shear_modulus: F,
+    /// `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+    pub largest_impact_speed: F,
+    /// `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+    pub largest_effective_radius: F,
+}
+
+/// An elastic material, for `ss_effective_moduli_*`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_material<F> {
+    /// Young's modulus (Pa).
+    pub youngs_modulus: F,
+    /// Poisson's ratio, in (-1, 0.5].
+    pub poisson_ratio: F,
 }
 
 /// Per-contact state, owned by the caller: zero for a new contact.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ss_state<F> {
-    /// Stored tangential displacement (m); unused by the stateless law.
+    /// Stored tangential displacement (m) of `SS_MODEL_AA` and `SS_MODEL_AA_LUDING`.
     pub displacement: ss_vec3<F>,
+    /// Stored tangential spring force (N) of `SS_MODEL_HERTZ_AA` and `SS_MODEL_HERTZ_AA_LUDING`.
+    pub spring_force: ss_vec3<F>,
+    /// The contact radius (m) at which `SS_MODEL_HERTZ_AA*` last updated `spring_force`.
+    pub contact_radius: F,
 }
 
 /// The result of one contact evaluation. Forces act on j (on the sphere, for a wall); i receives
@@ -296,6 +354,50 @@ fn build_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
 
 /// The law `*p` describes, or the error code and the `SS_PARAMETER_*` it is about.
 fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
+    let hertz = || -> Result<ss_law<F>, ParameterError> {
+        let largest = HertzImpact {
+            speed: p.largest_impact_speed,
+            effective_radius: p.largest_effective_radius,
+        };
+        let normal = Hertz::new(p.effective_modulus, p.restitution, largest)?;
+        let (dt, m) = (p.time_step, p.smallest_effective_mass);
+        if p.model == SS_MODEL_HERTZ_FRICTIONLESS {
+            let law = ContactLaw::new(normal, Frictionless);
+            let time_step = law.time_step(dt, m)?;
+            return Ok(ss_law {
+                law: AnyLaw::HertzFrictionless(law),
+                time_step,
+            });
+        }
+        let tangential =
+            MindlinParameters::new(p.effective_shear_modulus, p.dashpot_ratio, p.friction)?;
+        Ok(match p.model {
+            SS_MODEL_HERTZ_STATELESS => {
+                let law = ContactLaw::new(normal, MindlinStateless(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::HertzStateless(law),
+                    time_step,
+                }
+            }
+            SS_MODEL_HERTZ_AA_LUDING => {
+                let law = ContactLaw::new(normal, MindlinAALuding(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::HertzAALuding(law),
+                    time_step,
+                }
+            }
+            _ => {
+                let law = ContactLaw::new(normal, MindlinAA(tangential));
+                let time_step = law.time_step(dt, m)?;
+                ss_law {
+                    law: AnyLaw::HertzAA(law),
+                    time_step,
+                }
+            }
+        })
+    };
     let built = || -> Result<ss_law<F>, ParameterError> {
         let normal = LinearSpringDashpot::new(p.normal_stiffness, p.restitution)?;
         let (dt, m) = (p.time_step, p.smallest_effective_mass);
@@ -342,10 +444,20 @@ fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
         SS_MODEL_AA_LUDING,
         SS_MODEL_FRICTIONLESS,
     ];
-    if !known.contains(&p.model) {
+    let known_hertz = [
+        SS_MODEL_HERTZ_FRICTIONLESS,
+        SS_MODEL_HERTZ_STATELESS,
+        SS_MODEL_HERTZ_AA,
+        SS_MODEL_HERTZ_AA_LUDING,
+    ];
+    let result = if known.contains(&p.model) {
+        built()
+    } else if known_hertz.contains(&p.model) {
+        hertz()
+    } else {
         return Err((SS_ERR_UNKNOWN_MODEL, SS_PARAMETER_MODEL));
-    }
-    built().map_err(|e| (parameter_code(e), rejected_parameter(e)))
+    };
+    result.map_err(|e| (parameter_code(e), rejected_parameter(e)))
 }
 
 /// The stability limit of the law `*params` describes, for its smallest effective mass: what a
@@ -388,11 +500,22 @@ unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
 
 /// How a law's per-contact state sits in the caller's [`ss_state`].
 trait Stored<F: Float>: ContactState {
+    /// Which of `ss_state_arrays`' arrays the batch call needs for this state.
+    const ARRAYS: StateArrays;
     fn load(state: &ss_state<F>) -> Self;
     fn store(&self, state: &mut ss_state<F>);
 }
 
+/// The arrays a law's state lives in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum StateArrays {
+    None,
+    Displacement,
+    Mindlin,
+}
+
 impl<F: Float> Stored<F> for () {
+    const ARRAYS: StateArrays = StateArrays::None;
     #[inline(always)]
     fn load(_: &ss_state<F>) -> Self {}
     #[inline(always)]
@@ -400,6 +523,7 @@ impl<F: Float> Stored<F> for () {
 }
 
 impl<F: Float> Stored<F> for SpringDisplacement<F> {
+    const ARRAYS: StateArrays = StateArrays::Displacement;
     #[inline(always)]
     fn load(state: &ss_state<F>) -> Self {
         SpringDisplacement {
@@ -409,6 +533,22 @@ impl<F: Float> Stored<F> for SpringDisplacement<F> {
     #[inline(always)]
     fn store(&self, state: &mut ss_state<F>) {
         state.displacement = self.displacement.into();
+    }
+}
+
+impl<F: Float> Stored<F> for MindlinSpring<F> {
+    const ARRAYS: StateArrays = StateArrays::Mindlin;
+    #[inline(always)]
+    fn load(state: &ss_state<F>) -> Self {
+        MindlinSpring {
+            force: state.spring_force.into(),
+            contact_radius: state.contact_radius,
+        }
+    }
+    #[inline(always)]
+    fn store(&self, state: &mut ss_state<F>) {
+        state.spring_force = self.force.into();
+        state.contact_radius = self.contact_radius;
     }
 }
 
@@ -580,6 +720,10 @@ unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law
         AnyLaw::ModelAA(l) => AnyBound::ModelAA(Box::leak(Box::new(l)).at(dt)),
         AnyLaw::ModelAALuding(l) => AnyBound::ModelAALuding(Box::leak(Box::new(l)).at(dt)),
         AnyLaw::Frictionless(l) => AnyBound::Frictionless(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::HertzStateless(l) => AnyBound::HertzStateless(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::HertzAA(l) => AnyBound::HertzAA(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::HertzAALuding(l) => AnyBound::HertzAALuding(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::HertzFrictionless(l) => AnyBound::HertzFrictionless(Box::leak(Box::new(l)).at(dt)),
     };
     let handle = ss_bound_law { bound, wall: None };
     // SAFETY: out was checked non-null.
@@ -706,8 +850,10 @@ pub struct ss_sphere_arrays<F> {
     pub mass: *const F,
 }
 
-/// Per-contact states as arrays: the stored tangential displacement (m) of pair `k` is element
-/// `k`. The stateless and frictionless laws do not read them, and the pointers may then be null.
+/// Per-contact states as arrays: element `k` holds what `ss_state_*` holds for pair `k`. A law
+/// reads only its own arrays (`SS_MODEL_AA*`: the displacement; `SS_MODEL_HERTZ_AA*`: the spring
+/// force and the contact radius); the others, and all of them for the stateless and frictionless
+/// laws, may be null.
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct ss_state_arrays<F> {
@@ -717,6 +863,14 @@ pub struct ss_state_arrays<F> {
     pub displacement_y: *mut F,
     /// Displacement z.
     pub displacement_z: *mut F,
+    /// Spring force x.
+    pub spring_force_x: *mut F,
+    /// Spring force y.
+    pub spring_force_y: *mut F,
+    /// Spring force z.
+    pub spring_force_z: *mut F,
+    /// Contact radius.
+    pub contact_radius: *mut F,
 }
 
 /// What a batch call writes, as arrays: element `k` of each holds what `ss_forces_*` holds for
@@ -922,30 +1076,62 @@ impl<'a, F: Float> Outputs<'a, F> {
     }
 }
 
-/// A batch call's states, as slices (`None` where the law stores nothing and the caller gave
-/// null).
-struct States<'a, F>(Option<[&'a mut [F]; 3]>);
+/// A batch call's states, as slices: the displacement's and the Mindlin spring's (`None` where
+/// the caller gave null).
+struct States<'a, F> {
+    displacement: Option<[&'a mut [F]; 3]>,
+    mindlin: Option<[&'a mut [F]; 4]>,
+}
 
 impl<F: Float> States<'_, F> {
+    /// Whether the arrays a state of kind `arrays` lives in were given.
+    fn has(&self, arrays: StateArrays) -> bool {
+        match arrays {
+            StateArrays::None => true,
+            StateArrays::Displacement => self.displacement.is_some(),
+            StateArrays::Mindlin => self.mindlin.is_some(),
+        }
+    }
+
     #[inline(always)]
     fn load<S: Stored<F>>(&self, k: usize) -> S {
-        let displacement = match &self.0 {
-            Some([x, y, z]) => ss_vec3 {
+        let mut state = ss_state::default();
+        if let Some([x, y, z]) = &self.displacement {
+            state.displacement = ss_vec3 {
                 x: x[k],
                 y: y[k],
                 z: z[k],
-            },
-            None => ss_vec3::default(),
-        };
-        S::load(&ss_state { displacement })
+            };
+        }
+        if let Some([x, y, z, a]) = &self.mindlin {
+            state.spring_force = ss_vec3 {
+                x: x[k],
+                y: y[k],
+                z: z[k],
+            };
+            state.contact_radius = a[k];
+        }
+        S::load(&state)
     }
 
     #[inline(always)]
     fn store<S: Stored<F>>(&mut self, k: usize, state: &S) {
-        if let Some([x, y, z]) = &mut self.0 {
-            let mut out = ss_state::default();
-            state.store(&mut out);
-            (x[k], y[k], z[k]) = (out.displacement.x, out.displacement.y, out.displacement.z);
+        let mut out = ss_state::default();
+        state.store(&mut out);
+        match S::ARRAYS {
+            StateArrays::None => {}
+            StateArrays::Displacement => {
+                if let Some([x, y, z]) = &mut self.displacement {
+                    let d = out.displacement;
+                    (x[k], y[k], z[k]) = (d.x, d.y, d.z);
+                }
+            }
+            StateArrays::Mindlin => {
+                if let Some([x, y, z, a]) = &mut self.mindlin {
+                    let f = out.spring_force;
+                    (x[k], y[k], z[k], a[k]) = (f.x, f.y, f.z, out.contact_radius);
+                }
+            }
         }
     }
 }
@@ -1040,9 +1226,12 @@ fn fill<F: Float, const N: usize>(
     }
 }
 
-/// Whether the bound law keeps a per-contact state (a zero-sized state is none).
-fn keeps_state<L: Law>(_: &BoundLaw<'_, L>) -> bool {
-    size_of::<L::State>() > 0
+/// The arrays the bound law's per-contact state lives in.
+fn state_arrays<L: Law>(_: &BoundLaw<'_, L>) -> StateArrays
+where
+    L::State: Stored<L::Float>,
+{
+    <L::State as Stored<L::Float>>::ARRAYS
 }
 
 /// # Safety
@@ -1087,13 +1276,26 @@ where
         states.displacement_z,
     ]
     .map(|p| unsafe { write(p, count) });
-    let mut states = match displacement {
-        [Some(x), Some(y), Some(z)] => States(Some([x, y, z])),
-        _ => States(None),
+    let mindlin = [
+        states.spring_force_x,
+        states.spring_force_y,
+        states.spring_force_z,
+        states.contact_radius,
+    ]
+    .map(|p| unsafe { write(p, count) });
+    let mut states = States {
+        displacement: match displacement {
+            [Some(x), Some(y), Some(z)] => Some([x, y, z]),
+            _ => None,
+        },
+        mindlin: match mindlin {
+            [Some(x), Some(y), Some(z), Some(a)] => Some([x, y, z, a]),
+            _ => None,
+        },
     };
     // A law that keeps a per-contact state needs its arrays.
-    let stores = each_law!(&bound.bound, AnyBound, b => keeps_state(b));
-    if stores && states.0.is_none() {
+    let needed = each_law!(&bound.bound, AnyBound, b => state_arrays(b));
+    if !states.has(needed) {
         return SS_ERR_NULL;
     }
     each_law!(&bound.bound, AnyBound, b => {
@@ -1133,9 +1335,26 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
     if !(m_star > F::ZERO && m_star.is_finite()) {
         return SS_ERR_NOT_POSITIVE;
     }
-    match LinearSpringDashpot::new(p.normal_stiffness, p.restitution) {
-        Ok(normal) => {
-            *out = ContactLaw::new(normal, Frictionless).contact_duration(m_star);
+    let hertz = [
+        SS_MODEL_HERTZ_FRICTIONLESS,
+        SS_MODEL_HERTZ_STATELESS,
+        SS_MODEL_HERTZ_AA,
+        SS_MODEL_HERTZ_AA_LUDING,
+    ];
+    let duration = if hertz.contains(&p.model) {
+        let largest = HertzImpact {
+            speed: p.largest_impact_speed,
+            effective_radius: p.largest_effective_radius,
+        };
+        Hertz::new(p.effective_modulus, p.restitution, largest)
+            .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star))
+    } else {
+        LinearSpringDashpot::new(p.normal_stiffness, p.restitution)
+            .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star))
+    };
+    match duration {
+        Ok(duration) => {
+            *out = duration;
             SS_OK
         }
         Err(e) => parameter_code(e),
@@ -1156,6 +1375,72 @@ unsafe fn stability_limit<F: Float>(params: *const ss_params<F>, out: *mut F) ->
         }
         Err(code) => code,
     }
+}
+
+/// # Safety
+/// As the exported moduli calls.
+unsafe fn moduli<F: Float>(
+    i: *const ss_material<F>,
+    j: *const ss_material<F>,
+    effective_modulus: *mut F,
+    effective_shear_modulus: *mut F,
+) -> i32 {
+    // SAFETY: null is checked (j may be null: a rigid body); the caller promises validity.
+    let (Some(i), j, Some(e), Some(g)) = (unsafe {
+        (
+            i.as_ref(),
+            j.as_ref(),
+            effective_modulus.as_mut(),
+            effective_shear_modulus.as_mut(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let material = |m: &ss_material<F>| Material::new(m.youngs_modulus, m.poisson_ratio);
+    let result = material(i).and_then(|a| match j {
+        Some(j) => material(j).map(|b| (a.effective_modulus(&b), a.effective_shear_modulus(&b))),
+        None => Ok((a.modulus_against_rigid(), a.shear_modulus_against_rigid())),
+    });
+    match result {
+        Ok((modulus, shear)) => {
+            (*e, *g) = (modulus, shear);
+            SS_OK
+        }
+        Err(error) => parameter_code(error),
+    }
+}
+
+/// Hertz's `E*` and Mindlin's `G*` of a contact between materials `*i` and `*j` (`j` null: a
+/// rigid body, such as a wall), for `ss_params_f64`. Returns `SS_OK`, `SS_ERR_NULL`, or the
+/// material's error (`SS_ERR_NOT_POSITIVE`, `SS_ERR_NON_FINITE_PARAMETER`,
+/// `SS_ERR_POISSON_RATIO`); the outputs are written only on success.
+///
+/// # Safety
+/// Non-null pointers must be valid.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_effective_moduli_f64(
+    i: *const ss_material<f64>,
+    j: *const ss_material<f64>,
+    effective_modulus: *mut f64,
+    effective_shear_modulus: *mut f64,
+) -> i32 {
+    // SAFETY: forwarded.
+    unsafe { moduli(i, j, effective_modulus, effective_shear_modulus) }
+}
+
+/// As `ss_effective_moduli_f64`, in f32.
+///
+/// # Safety
+/// Non-null pointers must be valid.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_effective_moduli_f32(
+    i: *const ss_material<f32>,
+    j: *const ss_material<f32>,
+    effective_modulus: *mut f32,
+    effective_shear_modulus: *mut f32,
+) -> i32 {
+    // SAFETY: forwarded.
+    unsafe { moduli(i, j, effective_modulus, effective_shear_modulus) }
 }
 
 /// # Safety

@@ -40,13 +40,17 @@ fn spheres<F: Copy>(c: &Columns<F>) -> ss_sphere_arrays<F> {
 }
 
 fn states<F>(c: &mut Columns<F>) -> ss_state_arrays<F> {
-    let [x, y, z] = &mut c.fields[..] else {
-        panic!("three columns")
+    let [x, y, z, fx, fy, fz, a] = &mut c.fields[..] else {
+        panic!("seven columns")
     };
     ss_state_arrays {
         displacement_x: x.as_mut_ptr(),
         displacement_y: y.as_mut_ptr(),
         displacement_z: z.as_mut_ptr(),
+        spring_force_x: fx.as_mut_ptr(),
+        spring_force_y: fy.as_mut_ptr(),
+        spring_force_z: fz.as_mut_ptr(),
+        contact_radius: a.as_mut_ptr(),
     }
 }
 
@@ -83,6 +87,10 @@ macro_rules! batch_matches_single_calls {
                 SS_MODEL_AA,
                 SS_MODEL_AA_LUDING,
                 SS_MODEL_FRICTIONLESS,
+                SS_MODEL_HERTZ_STATELESS,
+                SS_MODEL_HERTZ_AA,
+                SS_MODEL_HERTZ_AA_LUDING,
+                SS_MODEL_HERTZ_FRICTIONLESS,
             ] {
                 let params = ss_params::<R> {
                     model,
@@ -93,6 +101,10 @@ macro_rules! batch_matches_single_calls {
                     friction: 0.4,
                     time_step: 1.0e-6,
                     smallest_effective_mass: 1.0e-6,
+                    effective_modulus: 5.0e5,
+                    effective_shear_modulus: 2.0e5,
+                    largest_impact_speed: 1.0,
+                    largest_effective_radius: 1.0e-3,
                 };
                 let (mut law, mut bound) = (null_mut(), null_mut());
                 // SAFETY: valid pointers.
@@ -154,7 +166,7 @@ macro_rules! batch_matches_single_calls {
                     }
                     singles.push(pair);
                 }
-                let mut batch_states = Columns::<R>::new(count, 3);
+                let mut batch_states = Columns::<R>::new(count, 7);
                 let mut single_states = vec![ss_state::<R>::default(); count];
                 for step in 0..20 {
                     let mut reals = Columns::<R>::new(count, 11);
@@ -188,13 +200,16 @@ macro_rules! batch_matches_single_calls {
                             codes.fields[0][k], single,
                             "model {model} step {step} pair {k}"
                         );
-                        let state = [0, 1, 2].map(|c| batch_states.fields[c][k].to_bits());
-                        let d = single_states[k].displacement;
-                        assert_eq!(state, [d.x, d.y, d.z].map(<R>::to_bits), "pair {k}");
+                        let state =
+                            [0, 1, 2, 3, 4, 5, 6].map(|c| batch_states.fields[c][k].to_bits());
+                        let (d, f) = (single_states[k].displacement, single_states[k].spring_force);
+                        let a = single_states[k].contact_radius;
+                        let single_state = [d.x, d.y, d.z, f.x, f.y, f.z, a].map(<R>::to_bits);
+                        assert_eq!(state, single_state, "model {model} pair {k}");
                         if single != SS_OK {
                             assert_eq!(
                                 state,
-                                [0, 1, 2].map(|c| before.fields[c][k].to_bits()),
+                                [0, 1, 2, 3, 4, 5, 6].map(|c| before.fields[c][k].to_bits()),
                                 "a failed pair keeps its state"
                             );
                             assert!(
@@ -251,8 +266,21 @@ macro_rules! batch_matches_single_calls {
                         $batch(bound, count, &spheres(&i), &no_radius, &no_states, &out),
                         SS_ERR_NULL
                     );
-                    no_states.displacement_y = null_mut();
-                    let stateful = model == SS_MODEL_AA || model == SS_MODEL_AA_LUDING;
+                    let stateful = match model {
+                        SS_MODEL_AA | SS_MODEL_AA_LUDING => {
+                            no_states.displacement_y = null_mut();
+                            true
+                        }
+                        SS_MODEL_HERTZ_AA | SS_MODEL_HERTZ_AA_LUDING => {
+                            no_states.contact_radius = null_mut();
+                            true
+                        }
+                        _ => {
+                            no_states.displacement_y = null_mut();
+                            no_states.contact_radius = null_mut();
+                            false
+                        }
+                    };
                     let expected = if stateful { SS_ERR_NULL } else { SS_OK };
                     assert_eq!(
                         $batch(bound, count, &spheres(&i), &spheres(&j), &no_states, &out),

@@ -18,6 +18,7 @@ fn params(model: i32) -> ss_params<f64> {
         friction: 0.4,
         time_step: 1.0e-6,
         smallest_effective_mass: 1.0e-6,
+        ..Default::default()
     }
 }
 
@@ -225,6 +226,7 @@ fn bad_input_to_a_bound_law_has_its_code_and_changes_nothing() {
     };
     let spring = ss_state {
         displacement: v(1.0e-6, -2.0e-6, 0.0),
+        ..Default::default()
     };
     let sentinel = ss_forces {
         touching: 7,
@@ -346,6 +348,7 @@ fn f32_bound_calls_give_the_shared_law_bits() {
         friction: p.friction as f32,
         time_step: p.time_step as f32,
         smallest_effective_mass: p.smallest_effective_mass as f32,
+        ..Default::default()
     };
     let mut random = Xorshift::new(11);
     let to32 = |s: ss_sphere<f64>| {
@@ -384,5 +387,154 @@ fn f32_bound_calls_give_the_shared_law_bits() {
         }
         ss_bound_law_free_f32(bound);
         ss_law_free_f32(law);
+    }
+}
+
+/// The Hertz-Mindlin models through the C ABI: the Rust kernel's law and bits, its state in
+/// `spring_force` and `contact_radius`, and each bad Hertz input refused with its code.
+#[test]
+fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
+    use soft_sphere::{
+        ContactLaw, Hertz, HertzImpact, Interaction, MindlinAA, MindlinParameters, MindlinSpring,
+        Sphere, Vec3,
+    };
+    let (steel, rigid) = (
+        ss_material {
+            youngs_modulus: 208.0e9,
+            poisson_ratio: 0.3,
+        },
+        null(),
+    );
+    let (mut e, mut g) = (0.0, 0.0);
+    // SAFETY: valid pointers (j null: a rigid body).
+    assert_eq!(
+        unsafe { ss_effective_moduli_f64(&steel, rigid, &mut e, &mut g) },
+        SS_OK
+    );
+    assert!((e - 208.0e9 / 0.91).abs() < 1.0 && (g - 80.0e9 / 1.7).abs() < 1.0);
+    let bad = ss_material {
+        youngs_modulus: 1.0e9,
+        poisson_ratio: 0.7,
+    };
+    let (mut e2, mut g2) = (-1.0, -1.0);
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_effective_moduli_f64(&steel, &bad, &mut e2, &mut g2) };
+    assert_eq!((code, e2, g2), (SS_ERR_POISSON_RATIO, -1.0, -1.0));
+
+    let p = ss_params {
+        model: SS_MODEL_HERTZ_AA,
+        restitution: 0.8,
+        dashpot_ratio: 0.5,
+        friction: 0.3,
+        time_step: 1.0e-8,
+        smallest_effective_mass: 1.0e-3,
+        effective_modulus: e,
+        effective_shear_modulus: g,
+        largest_impact_speed: 1.0,
+        largest_effective_radius: 0.01,
+        ..Default::default()
+    };
+    let mut law = null_mut();
+    // SAFETY: valid pointers.
+    assert_eq!(unsafe { ss_law_new_f64(&p, &mut law) }, SS_OK);
+    let largest = HertzImpact {
+        speed: 1.0,
+        effective_radius: 0.01,
+    };
+    let rust = ContactLaw::new(
+        Hertz::new(e, 0.8, largest).unwrap(),
+        MindlinAA(MindlinParameters::new(g, 0.5, 0.3).unwrap()),
+    );
+    let dt = rust.time_step(1.0e-8, 1.0e-3).unwrap();
+    let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, 0.01 - 2e-6), 0.01, 7850.0);
+    sphere.velocity = Vec3::new(0.2, 0.0, -0.1);
+    let floor = ss_wall {
+        point: v(0.0, 0.0, 0.0),
+        normal: v(0.0, 0.0, 1.0),
+        velocity: v(0.0, 0.0, 0.0),
+    };
+    let wall = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let mut ours = MindlinSpring::default();
+    let mut theirs = ss_state::default();
+    for _ in 0..3 {
+        let mut out = ss_forces::default();
+        let c_sphere = ss_sphere {
+            position: v(sphere.position.x, sphere.position.y, sphere.position.z),
+            velocity: v(sphere.velocity.x, sphere.velocity.y, sphere.velocity.z),
+            angular_velocity: v(0.0, 0.0, 0.0),
+            radius: sphere.radius,
+            mass: sphere.mass,
+        };
+        // SAFETY: valid pointers.
+        assert_eq!(
+            unsafe { ss_sphere_wall_f64(law, &c_sphere, &floor, &mut theirs, &mut out) },
+            SS_OK
+        );
+        let Ok(Interaction::Touching(f)) = rust.sphere_wall(&sphere, &wall, &mut ours, dt) else {
+            panic!("touching")
+        };
+        // The C ABI reports the sphere's force as the one on j.
+        assert_eq!(out.normal_force.to_bits(), f.normal_force.to_bits());
+        assert_eq!(out.force_on_j.x.to_bits(), f.force_on_i().x.to_bits());
+        assert_eq!(theirs.spring_force.x.to_bits(), ours.force.x.to_bits());
+        assert_eq!(
+            theirs.contact_radius.to_bits(),
+            ours.contact_radius.to_bits()
+        );
+        assert_eq!(
+            theirs.displacement.x, 0.0,
+            "the linear laws' field stays unused"
+        );
+    }
+    let mut duration = 0.0;
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_contact_duration_f64(&p, 1.0e-3, &mut duration) },
+        SS_OK
+    );
+    assert_eq!(duration, rust.contact_duration(1.0e-3));
+    // SAFETY: the handle came from ss_law_new_f64.
+    unsafe { ss_law_free_f64(law) };
+
+    for (change, code, parameter) in [
+        (
+            (|p: &mut ss_params<f64>| p.effective_modulus = 0.0) as fn(&mut ss_params<f64>),
+            SS_ERR_NOT_POSITIVE,
+            SS_PARAMETER_MODULUS,
+        ),
+        (
+            |p| p.effective_shear_modulus = f64::NAN,
+            SS_ERR_NON_FINITE_PARAMETER,
+            SS_PARAMETER_MODULUS,
+        ),
+        (
+            |p| p.largest_impact_speed = -1.0,
+            SS_ERR_NOT_POSITIVE,
+            SS_PARAMETER_SPEED,
+        ),
+        (
+            |p| p.largest_effective_radius = 0.0,
+            SS_ERR_NOT_POSITIVE,
+            SS_PARAMETER_RADIUS,
+        ),
+        (
+            |p| p.restitution = 2.0,
+            SS_ERR_RESTITUTION,
+            SS_PARAMETER_RESTITUTION,
+        ),
+        (
+            |p| p.time_step = 1.0,
+            SS_ERR_UNSTABLE_TIME_STEP,
+            SS_PARAMETER_TIME_STEP,
+        ),
+    ] {
+        let mut q = p;
+        change(&mut q);
+        let mut law = null_mut();
+        // SAFETY: valid pointers.
+        assert_eq!(unsafe { ss_law_new_f64(&q, &mut law) }, code);
+        assert!(law.is_null(), "nothing written on error");
+        // SAFETY: a valid pointer.
+        assert_eq!(unsafe { ss_rejected_parameter_f64(&q) }, parameter);
     }
 }
