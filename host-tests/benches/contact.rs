@@ -12,10 +12,11 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use host_tests::pairs::{blocks, touching_pairs};
 use soft_sphere::batch::{ContactBlock, LANES};
 use soft_sphere::{
-    CheckedSphere, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Libm,
-    LinearSpring, LinearSpringDashpot, MathBackend, Micromath, MindlinAA, MindlinParameters,
-    ModelA, ModelAA, ModelB, ModelC, NormalModel, Rotation, Sphere, Stateless, Std,
-    TangentialModel, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
+    CheckedSphere, ConstantRolling, ContactLaw, ElasticPlasticRolling, Float, Frictionless, Hertz,
+    HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, Micromath,
+    MindlinAA, MindlinParameters, ModelA, ModelAA, ModelB, ModelC, NormalModel, RollingModel,
+    Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
+    effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -24,15 +25,19 @@ fn pairs<F: Float>() -> Vec<(Sphere<F>, Sphere<F>)> {
     touching_pairs(BATCH)
 }
 
-fn bench_law<F: Float, N: NormalModel<F>, T: TangentialModel<F>, M: MathBackend<F>, R: Rotation>(
-    c: &mut Criterion,
-    name: &str,
-    law: ContactLaw<F, N, T, M, R>,
-) {
+fn bench_law<F, N, T, M, R, Ro>(c: &mut Criterion, name: &str, law: ContactLaw<F, N, T, M, R, Ro>)
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+    Ro: RollingModel<F>,
+{
     let pairs = pairs::<F>();
     let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
     let dt: TimeStep<F> = law.time_step(law.recommended_time_step(m), m).unwrap();
-    let mut states = [T::State::default(); BATCH];
+    let mut states = [Ro::State::<T::State>::default(); BATCH];
     let mut group = c.benchmark_group("contact");
     group.throughput(Throughput::Elements(BATCH as u64));
     group.bench_function(name, |b| {
@@ -83,6 +88,22 @@ macro_rules! every_law {
             $c,
             &with("model_aa"),
             ContactLaw::new(normal, ModelAA(p)).with_backend::<$M>(),
+        );
+        bench_law(
+            $c,
+            &with("model_aa_constant_rolling"),
+            ContactLaw::new(normal, ModelAA(p))
+                .with_rolling(ConstantRolling::new(0.1 as $F).unwrap())
+                .with_backend::<$M>(),
+        );
+        let epsd =
+            ElasticPlasticRolling::new(0.1 as $F, 1.0e-4 as $F, 0.0 as $F, 1.0e-9 as $F).unwrap();
+        bench_law(
+            $c,
+            &with("model_aa_epsd_rolling"),
+            ContactLaw::new(normal, ModelAA(p))
+                .with_rolling(epsd)
+                .with_backend::<$M>(),
         );
         let largest = HertzImpact {
             speed: 1.0 as $F,
