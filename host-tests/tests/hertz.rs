@@ -548,3 +548,33 @@ fn a_law_over_hertz_is_a_law() {
     assert_eq!(name(&ContactLaw::new(hertz, MindlinAA(p))), 16);
     assert_eq!(name(&ContactLaw::new(hertz, MindlinStateless(p))), 0);
 }
+
+#[test]
+fn the_slots_give_back_what_they_were_built_from() {
+    let m = Material::new(70.0e9, 0.33).unwrap();
+    assert_eq!((m.youngs_modulus(), m.poisson_ratio()), (70.0e9, 0.33));
+    assert_eq!(m.shear_modulus(), 70.0e9 / 2.66);
+    let largest = impact(3.9, 2.5e-3);
+    let h = Hertz::new(2.0e11, 0.5, largest).unwrap();
+    assert_eq!(
+        (h.effective_modulus(), h.restitution(), h.largest_impact()),
+        (2.0e11, 0.5, largest)
+    );
+    let p = MindlinParameters::new(4.0e10, 0.5, 0.3).unwrap();
+    assert_eq!(
+        (p.shear_modulus(), p.dashpot_ratio(), p.friction()),
+        (4.0e10, 0.5, 0.3)
+    );
+    assert_eq!(p.stiffness(1e-4), 8.0 * 4.0e10 * 1e-4);
+    let c = soft_sphere::ConstantRolling::new(0.1).unwrap();
+    assert_eq!(c.friction(), 0.1);
+    let e = soft_sphere::ElasticPlasticRolling::new(0.2, 3.0, 0.0, 1e-9).unwrap();
+    assert_eq!((e.friction(), e.stiffness()), (0.2, 3.0));
+    // A given damping factor reports the rebound it gives: the solved one's inverse.
+    let again = Hertz::with_damping_factor(2.0e11, h.damping_factor(), largest).unwrap();
+    assert!(
+        (again.restitution() - 0.5).abs() < 1e-6,
+        "{}",
+        again.restitution()
+    );
+}

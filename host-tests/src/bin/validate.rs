@@ -93,10 +93,11 @@ fn run() -> Result<bool, Box<dyn Error>> {
             table.write_csv(&out_dir.join(format!("{name}.csv")))?;
         }
     }
-    let [_, (_, talk), (_, mfix), (_, plate), ..] = &cases;
+    let [_, (_, talk), (_, mfix), (_, plate), .., (_, oblique)] = &cases;
     plot_kharaz(&out_dir, talk)?;
     plot_mfix(&out_dir, mfix)?;
     plot_plate(&out_dir, plate)?;
+    plot_chung_ooi(&out_dir, oblique)?;
     let passed = report_checks(&out_dir, &cases)?;
     progress(&format!("done; results in {}", out_dir.display()));
     Ok(passed)
@@ -282,6 +283,64 @@ fn plot_mfix(out_dir: &Path, mfix: &CaseOutput) -> Result<(), Box<dyn Error>> {
             &out_dir.join(format!("{file}.svg")),
             &format!("Model AA vs MFiX DEM05 linear model: {label}"),
             ("impact angle from the normal (deg)", label),
+            &series,
+            Axes::Linear,
+        )?;
+    }
+    Ok(())
+}
+
+/// Chung & Ooi's Tests 5 and 6: every law against the paper's reference curve and rigid-body
+/// theory in gross sliding.
+fn plot_chung_ooi(out_dir: &Path, oblique: &CaseOutput) -> Result<(), Box<dyn Error>> {
+    let panels = [
+        (
+            "chung_ooi_test5",
+            "psi",
+            "chung_ooi2011_test5_steel.csv",
+            "Chung & Ooi Test 5 (steel): V_s'/(mu V_n') against psi = V_s/(mu V_n)",
+            ("psi", "V_s' / (mu V_n')"),
+        ),
+        (
+            "chung_ooi_test6",
+            "x",
+            "chung_ooi2011_test6_al_alloy.csv",
+            "Chung & Ooi Test 6 (Al alloy): beta against x = 3.5 mu (1 + e) V_n / V_s",
+            ("x", "beta"),
+        ),
+    ];
+    for (name, abscissa, reference, title, labels) in panels {
+        let table = oblique.table(name);
+        let mut series: Vec<Series> = chung_ooi::Contact::ALL
+            .iter()
+            .map(|c| Series::new(c.name(), xy(table, abscissa, c.name()), Mark::Line))
+            .collect();
+        series.push(Series::new(
+            "Chung & Ooi (2011) reference",
+            data_points(reference),
+            Mark::Points,
+        ));
+        let rigid: Vec<(f64, f64)> = table
+            .column(abscissa)
+            .into_iter()
+            .filter_map(|x| {
+                let y = if name == "chung_ooi_test5" {
+                    chung_ooi::test5_rigid(x)
+                } else {
+                    chung_ooi::beta_rigid(x)
+                };
+                y.map(|y| (x, y))
+            })
+            .collect();
+        series.push(Series::new(
+            "rigid body, gross sliding",
+            rigid,
+            Mark::Theory,
+        ));
+        chart(
+            &out_dir.join(format!("{name}.svg")),
+            title,
+            labels,
             &series,
             Axes::Linear,
         )?;
