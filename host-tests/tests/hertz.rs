@@ -167,7 +167,7 @@ fn an_unloading_contact_shrinks_its_spring_with_the_contact_radius() {
 
 #[test]
 fn a_spring_loaded_small_and_released_large_gives_back_no_more_than_it_took() {
-    // The cycle that makes a stored displacement create energy (docs/physics.md, section 3.3):
+    // The cycle that makes a stored displacement create energy (docs/physics.md, section 3.2):
     // load the spring at a small overlap, press the contact deeper, then let the spring push
     // the slip back to where it started. Work done on the spring must not come back larger.
     let hertz = Hertz::new(1.0e9, 1.0, impact(1.0, 1e-3)).unwrap();
@@ -577,4 +577,53 @@ fn the_slots_give_back_what_they_were_built_from() {
         "{}",
         again.restitution()
     );
+}
+
+/// Largest distance from equilibrium over the last quarter of `steps`, relative to a 1 %
+/// perturbation, of a sphere pressed onto the floor to its declared impact's peak overlap (where
+/// the contact is stiffest) and stepped at `fraction` of the limit. Declaring a heavier mass is
+/// how the step passes the check on purpose.
+fn pressed_oscillation(restitution: f64, fraction: f64, steps: usize) -> f64 {
+    let (radius, density, speed, e_star) = (1.0e-3, 2500.0, 1.0, 1.0e9);
+    let hertz = Hertz::new(e_star, restitution, impact(speed, radius)).unwrap();
+    let law = ContactLaw::new(hertz, Frictionless);
+    let mass = Sphere::solid(Vec3::ZERO, radius, density).mass;
+    let peak = (15.0 * mass * speed * speed / (16.0 * e_star * radius.sqrt())).powf(0.4);
+    let press = 4.0 / 3.0 * e_star * radius.sqrt() * peak.powf(1.5);
+    let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, radius - 1.01 * peak), radius, density);
+    let limit = law.critical_time_step(mass);
+    let dt = law.time_step(fraction * limit, 4.0 * mass).unwrap();
+    let mut worst = 0.0f64;
+    for step in 0..steps {
+        let force = match law.sphere_wall(&sphere, &floor(), &mut (), dt).unwrap() {
+            Interaction::Touching(c) => c.force_on_i(),
+            Interaction::Apart => Vec3::ZERO,
+        };
+        advance_solid_sphere(
+            &mut sphere,
+            force + Vec3::new(0.0, 0.0, -press),
+            Vec3::ZERO,
+            dt,
+        );
+        if step >= 3 * steps / 4 {
+            worst = worst.max((radius - sphere.position.z - peak).abs());
+        }
+    }
+    worst / (0.01 * peak)
+}
+
+#[test]
+fn the_hertz_mode_is_stable_below_the_limit_and_grows_above_it() {
+    for e in [1.0, 0.5] {
+        let below = pressed_oscillation(e, 0.98, 4000);
+        let above = pressed_oscillation(e, 1.03, 4000);
+        // Below the limit the discrete amplitude stays bounded (1/sqrt(1 - 0.98^2) = 5x at most).
+        assert!(below <= 5.1, "e = {e}: grew below the limit ({below})");
+        // Above it the perturbation grows past that bound until the contact opens and the
+        // sphere bounces (the stiffening spring then limits the growth).
+        assert!(
+            above > 10.0 || !above.is_finite(),
+            "e = {e}: did not grow above ({above})"
+        );
+    }
 }

@@ -7,7 +7,7 @@
 //! the one that creates no energy: with a stored displacement (`F_s = -k_t(a) xi`, LAMMPS
 //! `mindlin`) loading at a fixed displacement stiffens the spring for free, and a spring loaded at
 //! a small contact and released at a large one gives back more work than it took
-//! (`docs/physics.md`, section 3.3; the energy property in `host-tests/tests/properties.rs`).
+//! (`docs/physics.md`, section 3.2; the energy test in `host-tests/tests/hertz.rs`).
 
 use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, coulomb,
