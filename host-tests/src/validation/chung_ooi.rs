@@ -34,6 +34,21 @@ pub struct Solid {
 }
 
 impl Solid {
+    /// A material named `name`: Young's modulus (Pa), Poisson's ratio, density (kg/m3).
+    const fn new(
+        name: &'static str,
+        youngs_modulus: f64,
+        poisson_ratio: f64,
+        density: f64,
+    ) -> Self {
+        Self {
+            name,
+            youngs_modulus,
+            poisson_ratio,
+            density,
+        }
+    }
+
     /// The kernel's material.
     pub fn material(&self) -> Material<f64> {
         Material::new(self.youngs_modulus, self.poisson_ratio).expect("a valid material")
@@ -41,68 +56,23 @@ impl Solid {
 }
 
 /// Test 1's glass.
-pub const GLASS: Solid = Solid {
-    name: "glass",
-    youngs_modulus: 4.8e10,
-    poisson_ratio: 0.20,
-    density: 2800.0,
-};
+pub const GLASS: Solid = Solid::new("glass", 4.8e10, 0.20, 2800.0);
 /// Test 1's limestone.
-pub const LIMESTONE: Solid = Solid {
-    name: "limestone",
-    youngs_modulus: 2.0e10,
-    poisson_ratio: 0.25,
-    density: 2500.0,
-};
+pub const LIMESTONE: Solid = Solid::new("limestone", 2.0e10, 0.25, 2500.0);
 /// Tests 2, 6, 7, 8's aluminium alloy.
-pub const AL_ALLOY: Solid = Solid {
-    name: "al_alloy",
-    youngs_modulus: 7.0e10,
-    poisson_ratio: 0.30,
-    density: 2699.0,
-};
+pub const AL_ALLOY: Solid = Solid::new("al_alloy", 7.0e10, 0.30, 2699.0);
 /// Test 2's magnesium alloy.
-pub const MG_ALLOY: Solid = Solid {
-    name: "mg_alloy",
-    youngs_modulus: 4.0e10,
-    poisson_ratio: 0.35,
-    density: 1800.0,
-};
+pub const MG_ALLOY: Solid = Solid::new("mg_alloy", 4.0e10, 0.35, 1800.0);
 /// Tests 3 and 4's alumina.
-pub const ALUMINA: Solid = Solid {
-    name: "alumina",
-    youngs_modulus: 3.8e11,
-    poisson_ratio: 0.23,
-    density: 4000.0,
-};
+pub const ALUMINA: Solid = Solid::new("alumina", 3.8e11, 0.23, 4000.0);
 /// Test 3's cast iron.
-pub const CAST_IRON: Solid = Solid {
-    name: "cast_iron",
-    youngs_modulus: 1.0e11,
-    poisson_ratio: 0.25,
-    density: 7000.0,
-};
+pub const CAST_IRON: Solid = Solid::new("cast_iron", 1.0e11, 0.25, 7000.0);
 /// Test 4's aluminium alloy plate (Kharaz et al.).
-pub const AL_PLATE: Solid = Solid {
-    name: "al_plate",
-    youngs_modulus: 7.0e10,
-    poisson_ratio: 0.33,
-    density: 2700.0,
-};
+pub const AL_PLATE: Solid = Solid::new("al_plate", 7.0e10, 0.33, 2700.0);
 /// Test 5's steel.
-pub const STEEL: Solid = Solid {
-    name: "steel",
-    youngs_modulus: 2.08e11,
-    poisson_ratio: 0.30,
-    density: 7850.0,
-};
+pub const STEEL: Solid = Solid::new("steel", 2.08e11, 0.30, 7850.0);
 /// Test 7's copper.
-pub const COPPER: Solid = Solid {
-    name: "copper",
-    youngs_modulus: 1.2e11,
-    poisson_ratio: 0.35,
-    density: 8900.0,
-};
+pub const COPPER: Solid = Solid::new("copper", 1.2e11, 0.35, 8900.0);
 
 /// The contact laws compared, in CSV column order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
