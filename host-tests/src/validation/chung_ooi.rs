@@ -626,8 +626,9 @@ pub fn kharaz(mut progress: impl FnMut(&str)) -> CaseOutput {
 
 // ---------------------------------------------------------------- Tests 5 and 6: oblique impacts
 
-/// Goal on the RMS distance of Hertz-Mindlin (plain cap) from the reference curves of Tests 5
-/// and 6.
+/// The RMS distance from the reference curves of Tests 5 and 6 that the run reports Hertz-Mindlin
+/// (plain cap) against; measured and shown, not enforced (README, "Hertz-Mindlin and Chung &
+/// Ooi's benchmark", says why it is not reached).
 pub const REFERENCE_RMS_GOAL: f64 = 0.10;
 
 /// Absolute tolerance on the RMS distance from rigid-body theory in gross sliding at `e = 1`.
@@ -802,7 +803,7 @@ fn distances(
             to_rigid.into(),
         ]);
         out.notes.push(format!(
-            "{test} {}: RMS {to_reference:.3} from the reference curve (goal for hertz_aa: {REFERENCE_RMS_GOAL})",
+            "{test} {}: RMS {to_reference:.3} from the reference curve (against {REFERENCE_RMS_GOAL} asked of hertz_aa)",
             c.name()
         ));
         out.absolute(
