@@ -132,6 +132,22 @@ fn the_hertz_force_and_mindlin_stiffness_follow_their_closed_forms() {
     let expected = 8.0 * g_star * a * slip * 1e-8;
     assert!((f.tangential_force.x / expected - 1.0).abs() < 1e-12);
     assert!((state.contact_radius / a - 1.0).abs() < 1e-12);
+
+    // With both dashpots: eta_n = alpha sqrt(m* (4/3) E* a) against the approach, and
+    // eta_t = r eta_n against the slip.
+    let (ratio, approach) = (0.5, 1e-3);
+    let hertz = Hertz::new(e_star, 0.5, impact(1.0, 1e-3)).unwrap();
+    let p = MindlinParameters::new(g_star, ratio, mu).unwrap();
+    let law = ContactLaw::new(hertz, MindlinAA(p));
+    let sphere = pressed(delta, Vec3::new(slip, 0.0, -approach));
+    let mut state = MindlinSpring::default();
+    let Ok(Interaction::Touching(f)) = law.sphere_wall(&sphere, &floor(), &mut state, dt) else {
+        panic!("touching")
+    };
+    let eta = hertz.damping_factor() * (sphere.mass * 4.0 / 3.0 * e_star * a).sqrt();
+    assert!((f.normal_force / (elastic + eta * approach) - 1.0).abs() < 1e-12);
+    let expected = 8.0 * g_star * a * slip * 1e-8 + ratio * eta * slip;
+    assert!((f.tangential_force.x / expected - 1.0).abs() < 1e-12);
 }
 
 #[test]

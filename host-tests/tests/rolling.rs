@@ -70,6 +70,13 @@ fn the_time_step_is_checked_against_the_rolling_spring() {
         Err(ParameterError::TimeStepUnstable { .. })
     ));
     assert!(law.time_step(0.99 * limit, 1.0).is_ok());
+    // With its dashpot: (2 / w) (sqrt(1 + z^2) - z), z = eta_r / (2 sqrt(k_r I)).
+    let zeta = 0.3;
+    let damping = 2.0 * zeta * (stiffness * inertia).sqrt();
+    let rolling = ElasticPlasticRolling::new(0.1, stiffness, damping, inertia).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p)).with_rolling(rolling);
+    let damped = limit * ((1.0 + zeta * zeta).sqrt() - zeta);
+    assert!((law.critical_time_step(1.0) / damped - 1.0).abs() < 1e-12);
 }
 
 const ROLLING_FRICTION: f64 = 0.2;
@@ -164,4 +171,40 @@ fn a_law_with_rolling_is_a_law() {
     let epsd = ElasticPlasticRolling::new(0.1, 1.0, 0.0, 1e-9).unwrap();
     assert_eq!(state_size(&law.with_rolling(epsd)), 24);
     let _ = Sphere::<f32>::at_rest(Vec3::ZERO, 1.0, 1.0);
+}
+
+#[test]
+fn twisting_about_the_normal_is_not_resisted() {
+    // A sphere pressed on the floor spinning about the floor's normal: its contact point does not
+    // slip and it does not roll, so neither rolling law puts a torque on it.
+    let normal = LinearSpringDashpot::new(1000.0, 0.9).unwrap();
+    let p = TangentialParameters::new(860.0, 0.5, 0.5).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p));
+    let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3 - 1.0e-5), 1.0e-3, 2500.0);
+    sphere.angular_velocity = Vec3::new(0.0, 0.0, 50.0);
+    let floor = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let dt = law.time_step(1e-6, sphere.mass).unwrap();
+    let constant = law.with_rolling(ConstantRolling::new(0.3).unwrap());
+    let epsd = law.with_rolling(ElasticPlasticRolling::new(0.3, 1e-4, 1e-7, 1e-12).unwrap());
+    let Ok(Interaction::Touching(a)) =
+        constant.sphere_wall(&sphere, &floor, &mut Default::default(), dt)
+    else {
+        panic!("touching")
+    };
+    let mut state = Default::default();
+    let Ok(Interaction::Touching(b)) = epsd.sphere_wall(&sphere, &floor, &mut state, dt) else {
+        panic!("touching")
+    };
+    assert_eq!(a.torque_on_i, Vec3::ZERO);
+    assert_eq!(b.torque_on_i, Vec3::ZERO);
+    assert_eq!(state.torque, Vec3::ZERO);
+    // Rolling about a tangent axis is resisted, against the spin.
+    sphere.angular_velocity = Vec3::new(0.0, 50.0, 0.0);
+    sphere.velocity = Vec3::new(50.0 * 1.0e-3, 0.0, 0.0);
+    let Ok(Interaction::Touching(c)) =
+        constant.sphere_wall(&sphere, &floor, &mut Default::default(), dt)
+    else {
+        panic!("touching")
+    };
+    assert!(c.torque_on_i.y < 0.0 && c.torque_on_i.x == 0.0);
 }
