@@ -643,3 +643,72 @@ fn the_hertz_mode_is_stable_below_the_limit_and_grows_above_it() {
         );
     }
 }
+
+#[test]
+fn a_sliding_step_keeps_what_each_rule_says() {
+    let (e_star, g_star, mu, ratio) = (1.0e9, 0.4e9, 0.5, 0.5);
+    let hertz = Hertz::new(e_star, 0.5, impact(1.0, 1e-3)).unwrap();
+    let p = MindlinParameters::new(g_star, ratio, mu).unwrap();
+    let (cap, luding) = (
+        ContactLaw::new(hertz, MindlinAA(p)),
+        ContactLaw::new(hertz, MindlinAALuding(p)),
+    );
+    let delta = 2e-6_f64;
+    let a = (1e-3 * delta).sqrt();
+    let dt = cap.time_step(1e-9, 1e-6).unwrap();
+    let step =
+        |law: &dyn Fn(&Sphere<f64>, &mut MindlinSpring<f64>) -> soft_sphere::ContactForces<f64>,
+         slip: f64,
+         spring: f64| {
+            let mut state = MindlinSpring {
+                force: Vec3::new(spring, 0.0, 0.0),
+                contact_radius: a,
+            };
+            let f = law(&pressed(delta, Vec3::new(slip, 0.0, 0.0)), &mut state);
+            (f, state)
+        };
+    let cap_law = |s: &Sphere<f64>, state: &mut MindlinSpring<f64>| {
+        *cap.sphere_wall(s, &floor(), state, dt)
+            .unwrap()
+            .forces()
+            .unwrap()
+    };
+    let luding_law = |s: &Sphere<f64>, state: &mut MindlinSpring<f64>| {
+        *luding
+            .sphere_wall(s, &floor(), state, dt)
+            .unwrap()
+            .forces()
+            .unwrap()
+    };
+    let limit = |f: &soft_sphere::ContactForces<f64>| mu * f.normal_force.abs();
+    // A spring ten times past the limit, no slip: both slide at the limit; the cap keeps the
+    // limit, Luding keeps the sliding force (no dashpot without slip).
+    let (f, kept) = step(&cap_law, 0.0, 1.0);
+    let l = limit(&f);
+    assert!(f.sliding && (f.tangential_force.x / l - 1.0).abs() < 1e-12);
+    assert!(1.0 > 10.0 * l && (kept.force.x / l - 1.0).abs() < 1e-12);
+    let (f, kept) = step(&luding_law, 0.0, 1.0);
+    assert!(f.sliding && kept.force.x == f.tangential_force.x);
+    // A spring within the limit whose dashpot makes the contact slide: the cap keeps the spring
+    // as it is; Luding keeps the sliding force plus the dashpot's.
+    let mass = pressed(delta, Vec3::ZERO).mass;
+    let eta_t = ratio * hertz.damping_factor() * (mass * 4.0 / 3.0 * e_star * a).sqrt();
+    let slip = -10.0 * l / eta_t;
+    let spring = 0.5 * l;
+    let (f, kept) = step(&cap_law, slip, spring);
+    // The wall slips by -slip relative to the sphere: F_s += -k_t (-slip) dt.
+    let grown = spring + 8.0 * g_star * a * slip * 1e-9;
+    assert!(f.sliding, "the dashpot makes it slide");
+    assert!(
+        grown.abs() < limit(&f),
+        "the spring itself stays within the limit"
+    );
+    assert!(
+        (kept.force.x / grown - 1.0).abs() < 1e-12,
+        "{} vs {grown}",
+        kept.force.x
+    );
+    let (f, kept) = step(&luding_law, slip, spring);
+    let dashpot = -eta_t * slip;
+    assert!((kept.force.x - (f.tangential_force.x + dashpot)).abs() <= 1e-12 * dashpot.abs());
+}

@@ -637,6 +637,12 @@ pub const ELASTIC_SLIDING_TOLERANCE: f64 = 1e-4;
 /// ([`TangentialParameters`]' note: 6.7 % more friction impulse than rigid-body theory).
 pub const DAMPED_SLIDING_TOLERANCE: f64 = 0.04;
 
+/// Steps per contact of the runs held to LAMMPS (which takes about 22000).
+pub const PEER_STEPS_PER_CONTACT: f64 = 2000.0;
+/// Absolute tolerance on `V_s'/(mu V_n')` against LAMMPS: its torque arm is `R - delta/2`, the
+/// kernel's `R` (measured within 0.016).
+pub const PEER_TOLERANCE: f64 = 0.02;
+
 /// The factor on `G*` of the sensitivity note: the stiffness ratio of LAMMPS 20220106's
 /// `fix wall/gran hertz/material` wall.
 pub const SOFTENED_SHEAR: f64 = 0.47;
@@ -858,6 +864,20 @@ pub fn oblique(mut progress: impl FnMut(&str)) -> CaseOutput {
     out.notes.push(format!(
         "hertz_aa with G* x {SOFTENED_SHEAR} (k_t/k_n 0.39 instead of 0.82): RMS {rms5:.3} from the Test 5 steel curve, {rms6:.3} from the Test 6 Al alloy curve"
     ));
+
+    // The peer: LAMMPS's own Hertz-Mindlin on Test 5 as two spheres.
+    for row in data::rows("lammps_pair_granular_test5.csv") {
+        let ours = test5_spheres(Contact::HertzAA, row[0], PEER_STEPS_PER_CONTACT);
+        out.absolute(
+            format!(
+                "chung_ooi test5 two spheres psi = {} hertz_aa vs LAMMPS pair granular",
+                row[0]
+            ),
+            ours,
+            row[1],
+            PEER_TOLERANCE,
+        );
+    }
 
     progress("Chung & Ooi Test 6");
     let xs = log_spaced(0.15, 25.0, 48);
