@@ -644,6 +644,10 @@ fn the_hertz_mode_is_stable_below_the_limit_and_grows_above_it() {
     }
 }
 
+/// One contact evaluation of a law on a sphere and its state.
+type Evaluate<'a> =
+    dyn Fn(&Sphere<f64>, &mut MindlinSpring<f64>) -> soft_sphere::ContactForces<f64> + 'a;
+
 #[test]
 fn a_sliding_step_keeps_what_each_rule_says() {
     let (e_star, g_star, mu, ratio) = (1.0e9, 0.4e9, 0.5, 0.5);
@@ -656,17 +660,14 @@ fn a_sliding_step_keeps_what_each_rule_says() {
     let delta = 2e-6_f64;
     let a = (1e-3 * delta).sqrt();
     let dt = cap.time_step(1e-9, 1e-6).unwrap();
-    let step =
-        |law: &dyn Fn(&Sphere<f64>, &mut MindlinSpring<f64>) -> soft_sphere::ContactForces<f64>,
-         slip: f64,
-         spring: f64| {
-            let mut state = MindlinSpring {
-                force: Vec3::new(spring, 0.0, 0.0),
-                contact_radius: a,
-            };
-            let f = law(&pressed(delta, Vec3::new(slip, 0.0, 0.0)), &mut state);
-            (f, state)
+    let step = |law: &Evaluate, slip: f64, spring: f64| {
+        let mut state = MindlinSpring {
+            force: Vec3::new(spring, 0.0, 0.0),
+            contact_radius: a,
         };
+        let f = law(&pressed(delta, Vec3::new(slip, 0.0, 0.0)), &mut state);
+        (f, state)
+    };
     let cap_law = |s: &Sphere<f64>, state: &mut MindlinSpring<f64>| {
         *cap.sphere_wall(s, &floor(), state, dt)
             .unwrap()
