@@ -713,3 +713,45 @@ fn a_sliding_step_keeps_what_each_rule_says() {
     let dashpot = -eta_t * slip;
     assert!((kept.force.x - (f.tangential_force.x + dashpot)).abs() <= 1e-12 * dashpot.abs());
 }
+
+#[test]
+fn the_stateless_mindlin_law_follows_its_closed_form_and_step() {
+    use soft_sphere::tangential::elapsed_contact_time;
+    use soft_sphere::{Libm, NormalModel};
+    let (e_star, g_star, mu, ratio) = (1.0e9, 0.4e9, 10.0, 0.5);
+    let hertz = Hertz::new(e_star, 0.5, impact(1.0, 1e-3)).unwrap();
+    let p = MindlinParameters::new(g_star, ratio, mu).unwrap();
+    let law = ContactLaw::new(hertz, MindlinStateless(p));
+    let (delta, slip, approach) = (2e-6_f64, 1e-4, 0.3);
+    let sphere = pressed(delta, Vec3::new(slip, 0.0, -approach));
+    let dt = law.time_step(1e-9, sphere.mass).unwrap();
+    let Ok(Interaction::Touching(f)) = law.sphere_wall(&sphere, &floor(), &mut (), dt) else {
+        panic!("touching")
+    };
+    // xi = v_t t_e with t_e from the oscillator at this overlap; trial -(k_t t_e + eta_t) v_t.
+    let unit = hertz.oscillator::<Libm>(sphere.mass);
+    let contact = hertz.contact::<Libm>(delta, -approach, 1e-3, &unit);
+    let elapsed = elapsed_contact_time::<f64, Libm>(delta, approach, &contact.oscillator);
+    let a = contact.contact_radius;
+    let eta_t = ratio * contact.oscillator.damping_coefficient;
+    let expected = (8.0 * g_star * a * elapsed + eta_t) * slip;
+    assert!(!f.sliding);
+    assert!(
+        (f.tangential_force.x / expected - 1.0).abs() < 1e-12,
+        "{} vs {expected}",
+        f.tangential_force.x
+    );
+    // Its step: a dashpot of k_t(a) pi / max(wd, beta) + eta_t at the stiffest contact.
+    let m = sphere.mass;
+    let design = hertz.design_contact(m);
+    let o = design.oscillator;
+    let longest = std::f64::consts::PI / o.damped_frequency.max(o.decay_rate);
+    let dashpot = 8.0 * g_star * design.contact_radius * longest + ratio * o.damping_coefficient;
+    let tangential = 2.0 * (2.0 / 7.0 * m) / dashpot;
+    let expected = hertz.critical_time_step(m).min(tangential);
+    assert!((law.critical_time_step(m) / expected - 1.0).abs() < 1e-12);
+    assert!(
+        tangential < hertz.critical_time_step(m),
+        "the tangential bound is the one checked"
+    );
+}
