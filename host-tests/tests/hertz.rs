@@ -712,6 +712,15 @@ fn a_sliding_step_keeps_what_each_rule_says() {
     let (f, kept) = step(&luding_law, slip, spring);
     let dashpot = -eta_t * slip;
     assert!((kept.force.x - (f.tangential_force.x + dashpot)).abs() <= 1e-12 * dashpot.abs());
+    // Just past the limit, no slip: capped to it.
+    let (f, kept) = step(&cap_law, 0.0, 1.5 * l);
+    assert!(f.sliding && (kept.force.x / l - 1.0).abs() < 1e-12);
+    // Past the limit but held by the dashpot: not sliding, and the spring is kept whole.
+    let slip = -0.5 * l / eta_t;
+    let (f, kept) = step(&cap_law, slip, 1.2 * l);
+    let grown = 1.2 * l + 8.0 * g_star * a * slip * 1e-9;
+    assert!(!f.sliding && grown > limit(&f));
+    assert!((kept.force.x / grown - 1.0).abs() < 1e-12);
 }
 
 #[test]
