@@ -242,9 +242,11 @@ impl<F: Float> TangentialModel<F> for MindlinStateless<F> {
     /// stiffest contact, with `t_e` at most `pi / wd`.
     fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
         let oscillator = &design.oscillator;
-        let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
-        let dashpot =
-            self.0.stiffness(design.contact_radius) * longest + self.0.dashpot(oscillator);
-        F::TWO * tangential_mass / dashpot
+        super::stateless::stateless_critical_step(
+            self.0.stiffness(design.contact_radius),
+            self.0.dashpot(oscillator),
+            oscillator,
+            tangential_mass,
+        )
     }
 }

@@ -53,6 +53,20 @@ pub fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
     }
 }
 
+/// Stability bound of a stateless law of stiffness `k_t` and dashpot `eta_t` on `mass`: while
+/// sticking it is a dashpot of strength `k_t t_e + eta_t`, largest at `t_e = pi / max(wd, beta)`
+/// (the cap of [`elapsed_contact_time`]), and an explicit update of a dashpot is stable below
+/// `2 m_t / strength`.
+pub(crate) fn stateless_critical_step<F: Float>(
+    stiffness: F,
+    dashpot: F,
+    oscillator: &NormalOscillator<F>,
+    mass: F,
+) -> F {
+    let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
+    F::TWO * mass / (stiffness * longest + dashpot)
+}
+
 impl<F: Float> TangentialModel<F> for Stateless<F> {
     type State = ();
     const VECTORISES: bool = false;
@@ -81,8 +95,11 @@ impl<F: Float> TangentialModel<F> for Stateless<F> {
     /// `pi / wd`: the explicit update of the slip stays stable below `2 m_t / (k_t pi / wd + eta_t)`.
     fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
         let oscillator = &design.oscillator;
-        let longest = F::PI / oscillator.damped_frequency.max_of(oscillator.decay_rate);
-        let dashpot = self.0.stiffness() * longest + self.0.dashpot(oscillator);
-        F::TWO * tangential_mass / dashpot
+        stateless_critical_step(
+            self.0.stiffness(),
+            self.0.dashpot(oscillator),
+            oscillator,
+            tangential_mass,
+        )
     }
 }
