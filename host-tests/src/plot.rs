@@ -140,9 +140,13 @@ where
                 .label(s.label.clone())
                 .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK)),
             Mark::Points => chart
-                .draw_series(s.points.iter().map(|&p| Circle::new(p, 4, BLACK.filled())))?
+                .draw_series(
+                    s.points
+                        .iter()
+                        .map(move |&p| Circle::new(p, 4, color.filled())),
+                )?
                 .label(s.label.clone())
-                .legend(|(x, y)| Circle::new((x + 10, y), 4, BLACK.filled())),
+                .legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled())),
         };
     }
     chart

@@ -139,3 +139,21 @@ fn rolling_resistance_stops_holds_and_accelerates_as_the_closed_forms() {
     assert_all_pass(&case);
     assert_eq!(case.checks.len(), 6);
 }
+
+/// LIGGGHTS' tangential dashpot keeps the normal damping ratio: `eta_t / eta_n = sqrt(k_t / k_n)`,
+/// which for one material on a rigid wall is Mindlin's `sqrt(2 (1 - nu) / (2 - nu))`, and for two
+/// spheres of one material the same.
+#[test]
+fn matched_tangential_damping_is_mindlins_stiffness_ratio() {
+    let nu: f64 = 0.30; // Test 6's and Test 8's aluminium alloy
+    let expected = (2.0 * (1.0 - nu) / (2.0 - nu)).sqrt();
+    for pair in [chung_ooi::test6_pair(), chung_ooi::test8_pair()] {
+        assert_eq!(pair.tangential_dashpot, 0.0);
+        let damped = pair.with_matched_damping();
+        assert!(
+            (damped.tangential_dashpot - expected).abs() < 1e-12,
+            "{} against {expected}",
+            damped.tangential_dashpot
+        );
+    }
+}

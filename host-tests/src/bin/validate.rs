@@ -290,36 +290,43 @@ fn plot_mfix(out_dir: &Path, mfix: &CaseOutput) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
-/// Chung & Ooi's Tests 5 and 6: every law against the paper's reference curve and rigid-body
+/// Chung & Ooi's Tests 5 and 6: every law against the paper's reference curves and rigid-body
 /// theory in gross sliding.
 fn plot_chung_ooi(out_dir: &Path, oblique: &CaseOutput) -> Result<(), Box<dyn Error>> {
     let panels = [
         (
             "chung_ooi_test5",
             "psi",
-            "chung_ooi2011_test5_steel.csv",
+            &[
+                ("Chung & Ooi (2011) steel", "chung_ooi2011_test5_steel.csv"),
+                (
+                    "Chung & Ooi (2011) finite elements",
+                    "chung_ooi2011_test5_fem.csv",
+                ),
+            ][..],
             "Chung & Ooi Test 5 (steel): V_s'/(mu V_n') against psi = V_s/(mu V_n)",
             ("psi", "V_s' / (mu V_n')"),
         ),
         (
             "chung_ooi_test6",
             "x",
-            "chung_ooi2011_test6_al_alloy.csv",
+            &[(
+                "Chung & Ooi (2011) Al alloy",
+                "chung_ooi2011_test6_al_alloy.csv",
+            )][..],
             "Chung & Ooi Test 6 (Al alloy): beta against x = 3.5 mu (1 + e) V_n / V_s",
             ("x", "beta"),
         ),
     ];
-    for (name, abscissa, reference, title, labels) in panels {
+    for (name, abscissa, references, title, labels) in panels {
         let table = oblique.table(name);
         let mut series: Vec<Series> = chung_ooi::Contact::ALL
             .iter()
             .map(|c| Series::new(c.name(), xy(table, abscissa, c.name()), Mark::Line))
             .collect();
-        series.push(Series::new(
-            "Chung & Ooi (2011) reference",
-            data_points(reference),
-            Mark::Points,
-        ));
+        for (label, reference) in references {
+            series.push(Series::new(*label, data_points(reference), Mark::Points));
+        }
         let rigid: Vec<(f64, f64)> = table
             .column(abscissa)
             .into_iter()
