@@ -246,6 +246,7 @@ impl Status {
     const NON_POSITIVE_MASS: u8 = 4;
     const COINCIDENT_CENTRES: u8 = 5;
     const NON_FINITE_RESULT: u8 = 6;
+    const PAST_STABLE_STEP: u8 = 7;
 
     /// An error's status.
     fn encode(error: ContactError) -> u8 {
@@ -254,6 +255,7 @@ impl Status {
             ContactError::NonPositiveRadius => Self::NON_POSITIVE_RADIUS,
             ContactError::NonPositiveMass => Self::NON_POSITIVE_MASS,
             ContactError::CoincidentCentres => Self::COINCIDENT_CENTRES,
+            ContactError::PastStableStep => Self::PAST_STABLE_STEP,
             // The one-contact path gives no other error (a history store's is its own).
             _ => Self::NON_FINITE_RESULT,
         }
@@ -268,6 +270,7 @@ impl Status {
             Self::NON_POSITIVE_RADIUS => Err(ContactError::NonPositiveRadius),
             Self::NON_POSITIVE_MASS => Err(ContactError::NonPositiveMass),
             Self::COINCIDENT_CENTRES => Err(ContactError::CoincidentCentres),
+            Self::PAST_STABLE_STEP => Err(ContactError::PastStableStep),
             _ => Err(ContactError::NonFiniteResult),
         }
     }
@@ -281,15 +284,18 @@ impl Status {
     }
 
     /// What the one-contact path returns for this pair: its checks in the same order (sphere i,
-    /// sphere j, coincident centres, apart, a non-finite result), the first failure winning.
+    /// sphere j, coincident centres, apart, a non-finite result, past the stable step), the
+    /// first failure winning. `stable` is true for a contact within the step's limit or one the
+    /// step tolerates.
     #[inline(always)]
     fn of_pair<F: Float>(
         i: &Sphere<F>,
         j: &Sphere<F>,
         separation: &Separation<F>,
-        finite: bool,
+        (finite, stable): (bool, bool),
     ) -> u8 {
-        let status = select(finite, Self::TOUCHING, Self::NON_FINITE_RESULT);
+        let status = select(stable, Self::TOUCHING, Self::PAST_STABLE_STEP);
+        let status = select(finite, status, Self::NON_FINITE_RESULT);
         let status = select(separation.apart(), Self::APART, status);
         let status = select(separation.coincident(), Self::COINCIDENT_CENTRES, status);
         Self::of_sphere(i, Self::of_sphere(j, status))
@@ -350,20 +356,25 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
     // Each lane derives its pair's oscillator: in vector registers that costs less than testing
     // whether the block's masses match the bound law's remembered pair (contact_batch_bench).
     let derive = |m: [F; 2]| law.normal().oscillator::<M>(effective_mass(m[0], m[1]));
+    let tolerate = time_step.tolerates_unstable_contacts();
+    let mut unstable = [false; N];
     for (lane, state) in kept.iter_mut().enumerate() {
         let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
         let separation = Separation::of(&i, &j);
         let frame = separation.frame::<M>(&i, &j, law.lever_arm());
         let oscillator = derive([i.mass, j.mass]);
-        let (forces, next) = law.touching(&frame, &oscillator, state, time_step);
+        let (forces, next, frequency) = law.touching(&frame, &oscillator, state, time_step);
         let finite = forces.is_finite() && next.is_finite();
-        let status = Status::of_pair(&i, &j, &separation, finite);
+        let within = law.within_stable_step(frequency, time_step);
+        let status = Status::of_pair(&i, &j, &separation, (finite, within || tolerate));
         let touching = status == Status::TOUCHING;
         let apart = status == Status::APART;
+        unstable[lane] = touching && !within;
         *state = select(touching, next, select(apart, Default::default(), *state));
         out.set(lane, &select(touching, forces, untouched), status);
     }
     *states = kept;
+    bound.count_unstable(unstable.iter().filter(|&&u| u).count());
 }
 
 impl<L: Law> BoundLaw<'_, L> {

@@ -131,6 +131,7 @@ pub struct BoundLaw<'l, L: Law> {
     time_step: TimeStep<L::Float>,
     pair: Memo<[L::Float; 2], NormalOscillator<L::Float>>,
     wall: Memo<L::Float, NormalOscillator<L::Float>>,
+    unstable: usize,
 }
 
 /// The value derived from the last key. Masses are positive, so the zeros an empty memo starts
@@ -166,7 +167,21 @@ impl<'l, L: Law> BoundLaw<'l, L> {
                 key: <L::Float as Float>::ZERO,
                 value: NormalOscillator::default(),
             },
+            unstable: 0,
         }
+    }
+
+    /// How many contacts past the step's stability limit this bound law has evaluated: always
+    /// zero unless its step [tolerates](TimeStep::tolerating_unstable_contacts) them (otherwise
+    /// they are refused with [`ContactError::PastStableStep`]).
+    pub fn unstable_contacts(&self) -> usize {
+        self.unstable
+    }
+
+    /// Counts `count` more tolerated contacts past the stable step.
+    #[inline(always)]
+    pub(crate) fn count_unstable(&mut self, count: impl Into<usize>) {
+        self.unstable += count.into();
     }
 
     /// The law.
@@ -186,7 +201,8 @@ impl<'l, L: Law> BoundLaw<'l, L> {
     ///
     /// # Errors
     /// [`ContactError::CoincidentCentres`]; [`ContactError::NonFiniteResult`] when the checked
-    /// inputs overflow. The state is then unchanged.
+    /// inputs overflow; [`ContactError::PastStableStep`] for a contact stiffer than the step
+    /// allows. The state is then unchanged.
     #[inline(always)]
     pub fn sphere_sphere(
         &mut self,
@@ -201,8 +217,9 @@ impl<'l, L: Law> BoundLaw<'l, L> {
     /// see [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall).
     ///
     /// # Errors
-    /// [`ContactError::NonFiniteResult`] when the checked inputs overflow; the state is then
-    /// unchanged.
+    /// [`ContactError::NonFiniteResult`] when the checked inputs overflow;
+    /// [`ContactError::PastStableStep`] for a contact stiffer than the step allows. The state is
+    /// then unchanged.
     #[inline(always)]
     pub fn sphere_wall(
         &mut self,

@@ -110,6 +110,12 @@ pub enum ContactError {
     NonFiniteResult,
     /// A new contact needs room in a [`ContactHistory`](crate::ContactHistory) that is full.
     HistoryFull,
+    /// The contact is stiffer than its time step was checked for: a pair lighter than the mass
+    /// the step was checked against, or a [`Hertz`](crate::Hertz) overlap past the one of the
+    /// declared impact. Explicit integration of it would be unstable and could create energy.
+    /// (A step that [tolerates](crate::TimeStep::tolerating_unstable_contacts) such contacts
+    /// evaluates and counts them instead.)
+    PastStableStep,
 }
 
 impl fmt::Display for ContactError {
@@ -121,6 +127,9 @@ impl fmt::Display for ContactError {
             Self::CoincidentCentres => "the sphere centres coincide",
             Self::NonFiniteResult => "the contact force overflowed",
             Self::HistoryFull => "the contact-history store is full",
+            Self::PastStableStep => {
+                "the contact is stiffer than its time step was checked for (unstable)"
+            }
         };
         f.write_str(text)
     }

@@ -61,6 +61,9 @@ pub struct ContactLaw<
     tangential: T,
     rolling: Ro,
     lever_arm: LeverArm,
+    /// The largest phase `w0 dt` (rad) that a step may advance a contact's normal oscillator by
+    /// and keep its normal and tangential modes stable (see [`ContactLaw::stable_phase`]).
+    stable_phase: F,
     slots: Slots<F, M, R>,
 }
 
@@ -170,9 +173,32 @@ impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
             tangential,
             rolling: NoRolling,
             lever_arm: LeverArm::Radius,
+            stable_phase: stable_phase(&normal, &tangential, Rotating::ROTATES),
             slots: PhantomData,
         }
     }
+}
+
+/// The largest `w0 dt` for which the normal and tangential modes of a contact are stable, `w0`
+/// the contact's normal natural frequency. Every mode's limit scales as `1 / w0`: a linear law's
+/// rates all go as `1 / sqrt(m*)`, Hertz's and Mindlin's as `sqrt(a / m*)`, and every damping
+/// ratio is constant. So the product is one number per law, here taken at a unit mass.
+fn stable_phase<F: Float, N: NormalModel<F>, T: TangentialModel<F>>(
+    normal: &N,
+    tangential: &T,
+    rotates: bool,
+) -> F {
+    let mass = F::ONE;
+    let tangential_mass = if rotates {
+        F::from_f64(2.0 / 7.0) * mass
+    } else {
+        mass
+    };
+    let design = normal.design_contact(mass);
+    let step = normal
+        .critical_time_step(mass)
+        .min_of(tangential.critical_time_step(&design, tangential_mass));
+    step * design.oscillator.natural_frequency
 }
 
 impl<F, N, T, M, R, Ro> ContactLaw<F, N, T, M, R, Ro>
@@ -191,6 +217,7 @@ where
             tangential: self.tangential,
             rolling: self.rolling,
             lever_arm: self.lever_arm,
+            stable_phase: self.stable_phase,
             slots: PhantomData,
         }
     }
@@ -202,6 +229,7 @@ where
             tangential: self.tangential,
             rolling: self.rolling,
             lever_arm: self.lever_arm,
+            stable_phase: stable_phase(&self.normal, &self.tangential, NonRotating::ROTATES),
             slots: PhantomData,
         }
     }
@@ -214,6 +242,7 @@ where
             tangential: self.tangential,
             rolling,
             lever_arm: self.lever_arm,
+            stable_phase: self.stable_phase,
             slots: PhantomData,
         }
     }
@@ -242,6 +271,16 @@ where
     /// The lever arm in use.
     pub fn lever_arm(&self) -> LeverArm {
         self.lever_arm
+    }
+
+    /// The largest phase `w0 dt` (rad) a step may advance a contact's normal oscillator by, `w0`
+    /// the contact's undamped normal frequency (for [`Hertz`](crate::Hertz), at its current
+    /// overlap), and keep the normal and the tangential modes stable. Every evaluation checks its
+    /// contact against it ([`ContactError::PastStableStep`]). It is
+    /// [`ContactLaw::critical_time_step`] times `w0`, the same for every mass (rolling aside:
+    /// its limit is checked by [`ContactLaw::time_step`]).
+    pub fn stable_phase(&self) -> F {
+        self.stable_phase
     }
 
     /// What the normal law derives for a pair of this effective mass (reference backend): a
@@ -332,7 +371,10 @@ where
     /// # Errors
     /// [`ContactError::NonFiniteInput`], [`ContactError::NonPositiveRadius`],
     /// [`ContactError::NonPositiveMass`], [`ContactError::CoincidentCentres`] for bad inputs;
-    /// [`ContactError::NonFiniteResult`] when finite inputs overflow.
+    /// [`ContactError::NonFiniteResult`] when finite inputs overflow;
+    /// [`ContactError::PastStableStep`] when the contact is stiffer than `time_step` was checked
+    /// for (a lighter pair than the declared mass, a [`Hertz`](crate::Hertz) overlap past the
+    /// declared impact's), unless the step tolerates such contacts.
     #[inline]
     pub fn sphere_sphere(
         &self,
@@ -345,7 +387,7 @@ where
         checked::check(j)?;
         let frame = geometry::sphere_sphere::<F, M>(i, j, self.lever_arm)?;
         let oscillator = || self.normal.oscillator::<M>(effective_mass(i.mass, j.mass));
-        self.interaction(frame, oscillator, state, time_step)
+        Ok(self.interaction(frame, oscillator, state, time_step)?.0)
     }
 
     /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step, checking
@@ -365,7 +407,7 @@ where
         checked::check(sphere)?;
         let frame = geometry::sphere_wall(sphere, wall, self.lever_arm);
         let oscillator = || self.normal.oscillator::<M>(sphere.mass);
-        self.interaction(frame, oscillator, state, time_step)
+        Ok(self.interaction(frame, oscillator, state, time_step)?.0)
     }
 
     /// The law bound to a checked time step: it evaluates [`CheckedSphere`]s with no repeated
@@ -375,7 +417,8 @@ where
         BoundLaw::new(self, time_step)
     }
 
-    /// The outcome for an overlap (`Some` frame) or none.
+    /// The outcome for an overlap (`Some` frame) or none, and whether it was a contact past the
+    /// stable step that the step tolerates.
     #[inline(always)]
     fn interaction(
         &self,
@@ -383,11 +426,11 @@ where
         oscillator: impl FnOnce() -> NormalOscillator<F>,
         state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
-    ) -> Result<Interaction<F>, ContactError> {
+    ) -> Result<(Interaction<F>, bool), ContactError> {
         match frame {
             None => {
                 *state = Default::default();
-                Ok(Interaction::Apart)
+                Ok((Interaction::Apart, false))
             }
             Some(frame) => self.resolve(frame, &oscillator(), state, time_step),
         }
@@ -400,19 +443,30 @@ where
         oscillator: &NormalOscillator<F>,
         state: &mut Ro::State<T::State>,
         time_step: TimeStep<F>,
-    ) -> Result<Interaction<F>, ContactError> {
-        let (forces, next_state) = self.touching(&frame, oscillator, state, time_step);
+    ) -> Result<(Interaction<F>, bool), ContactError> {
+        let (forces, next_state, frequency) = self.touching(&frame, oscillator, state, time_step);
         if !(forces.is_finite() && next_state.is_finite()) {
             return Err(ContactError::NonFiniteResult);
         }
+        let unstable = !self.within_stable_step(frequency, time_step);
+        if unstable && !time_step.tolerates_unstable_contacts() {
+            return Err(ContactError::PastStableStep);
+        }
         *state = next_state;
-        Ok(Interaction::Touching(forces))
+        Ok((Interaction::Touching(forces), unstable))
     }
 
-    /// The forces of a touching contact and the state to keep, not yet checked for finiteness.
-    /// Straight-line code apart from what the slots branch on, so the batch path
-    /// ([`crate::batch`]) runs it for every lane and keeps it where the lane touches: one
-    /// computation for both paths, the same bits.
+    /// Whether a contact of undamped normal frequency `frequency` is within the step's stability
+    /// limit (false for a NaN frequency).
+    #[inline(always)]
+    pub(crate) fn within_stable_step(&self, frequency: F, time_step: TimeStep<F>) -> bool {
+        frequency * time_step.seconds() < self.stable_phase
+    }
+
+    /// The forces of a touching contact, the state to keep and the contact's undamped normal
+    /// frequency, not yet checked for finiteness or stability. Straight-line code apart from
+    /// what the slots branch on, so the batch path ([`crate::batch`]) runs it for every lane and
+    /// keeps it where the lane touches: one computation for both paths, the same bits.
     #[inline(always)]
     pub(crate) fn touching(
         &self,
@@ -420,7 +474,7 @@ where
         oscillator: &NormalOscillator<F>,
         state: &Ro::State<T::State>,
         time_step: TimeStep<F>,
-    ) -> (ContactForces<F>, Ro::State<T::State>) {
+    ) -> (ContactForces<F>, Ro::State<T::State>, F) {
         let n = frame.normal;
         let normal_velocity = frame.velocity.dot(n);
         let normal = self.normal.contact::<M>(
@@ -482,7 +536,7 @@ where
                     time_step: time_step.seconds(),
                 },
             );
-            return (forces, next_state);
+            return (forces, next_state, normal.oscillator.natural_frequency);
         }
         let relative_spin = if R::ROTATES {
             frame.angular_velocity_i - frame.angular_velocity_j
@@ -502,7 +556,7 @@ where
         );
         forces.torque_on_i += torque;
         forces.torque_on_j -= torque;
-        (forces, next_state)
+        (forces, next_state, normal.oscillator.natural_frequency)
     }
 }
 
@@ -553,7 +607,9 @@ where
                     .oscillator::<M>(effective_mass(masses[0], masses[1]))
             })
         };
-        law.interaction(frame, oscillator, state, time_step)
+        let (interaction, unstable) = law.interaction(frame, oscillator, state, time_step)?;
+        bound.count_unstable(unstable);
+        Ok(interaction)
     }
 
     #[inline(always)]
@@ -578,6 +634,8 @@ where
         let time_step = bound.time_step();
         let oscillator =
             || *bound.wall_oscillator(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
-        law.interaction(frame, oscillator, state, time_step)
+        let (interaction, unstable) = law.interaction(frame, oscillator, state, time_step)?;
+        bound.count_unstable(unstable);
+        Ok(interaction)
     }
 }

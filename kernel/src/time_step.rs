@@ -4,18 +4,47 @@ use crate::float::Float;
 
 /// A time step (s) that a [`ContactLaw`](crate::ContactLaw) has checked: finite, positive and
 /// below the law's explicit-integration stability limit for the smallest effective mass the
-/// caller declared. Made by [`ContactLaw::time_step`](crate::ContactLaw::time_step).
+/// caller declared. Made by [`ContactLaw::time_step`](crate::ContactLaw::time_step) (or, from
+/// the spheres actually present, by a [`MaterialTable`](crate::MaterialTable)).
+///
+/// Every contact evaluated with it is checked against the same limit: a contact stiffer than
+/// the step allows (a lighter pair than the one declared, a [`Hertz`](crate::Hertz) overlap past
+/// the declared impact's) is refused with [`ContactError::PastStableStep`](crate::ContactError::PastStableStep),
+/// unless the step [tolerates](TimeStep::tolerating_unstable_contacts) such contacts.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
-pub struct TimeStep<F>(F);
+pub struct TimeStep<F> {
+    seconds: F,
+    tolerate: bool,
+}
 
 impl<F: Float> TimeStep<F> {
     pub(crate) fn checked(seconds: F) -> Self {
-        Self(seconds)
+        Self {
+            seconds,
+            tolerate: false,
+        }
     }
 
     /// The step in seconds.
     #[inline(always)]
     pub fn seconds(self) -> F {
-        self.0
+        self.seconds
+    }
+
+    /// The same step, with contacts past its stability limit evaluated instead of refused: a
+    /// [`BoundLaw`](crate::BoundLaw) counts them ([`BoundLaw::unstable_contacts`](crate::BoundLaw::unstable_contacts)).
+    /// For studies of instability, and for engines that report them in their statistics rather
+    /// than stop.
+    pub fn tolerating_unstable_contacts(self) -> Self {
+        Self {
+            tolerate: true,
+            ..self
+        }
+    }
+
+    /// Whether contacts past the stability limit are evaluated (and counted) instead of refused.
+    #[inline(always)]
+    pub fn tolerates_unstable_contacts(self) -> bool {
+        self.tolerate
     }
 }
