@@ -9,10 +9,10 @@ use host_tests::strategies::{Collision, collision, config};
 use proptest::prelude::*;
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
 use soft_sphere::{
-    ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Law, LeverArm,
-    LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
-    MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, NormalModel, Sphere,
-    SpringDisplacement, Stateless, Std, TangentialModel, TangentialParameters, Vec3,
+    CheckedSphere, ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction,
+    Law, LeverArm, LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters,
+    MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, NormalModel,
+    Sphere, SpringDisplacement, Stateless, Std, TangentialModel, TangentialParameters, Vec3,
 };
 
 /// Runs `steps` steps of the same pairs one at a time (law `one`) and in blocks of `N` (law
@@ -105,6 +105,9 @@ fn status_paths<F: Float>() -> Vec<(&'static str, Sphere<F>, Sphere<F>)> {
     let mut fast = base;
     fast.velocity = Vec3::new(f(big), F::ZERO, F::ZERO);
     add("finite input, force overflows", fast, huge);
+    let mut feather = at(0.99e-3, 0.0);
+    feather.mass = f(1e-15);
+    add("too light for the step", base, feather);
     paths
 }
 
@@ -241,6 +244,7 @@ fn the_status_paths_are_the_documented_ones() {
                 Err(ContactError::NonPositiveMass)
             }
             "finite input, force overflows" => Err(ContactError::NonFiniteResult),
+            "too light for the step" => Err(ContactError::PastStableStep),
             other => panic!("unlisted path {other}"),
         };
         let got = outcome.map(|o| o.forces().map(|f| f.sliding));
@@ -272,6 +276,44 @@ fn the_status_paths_are_the_documented_ones() {
             );
         }
     }
+}
+
+/// A step that tolerates contacts past its limit evaluates them in a block as one at a time
+/// does, with the same bits, and both count the same contacts.
+#[test]
+fn a_tolerating_step_counts_the_same_contacts_in_blocks() {
+    let normal = LinearSpringDashpot::new(1000.0, 0.7).unwrap();
+    let p = TangentialParameters::new(285.7, 0.5, 0.4).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
+    let dt = law
+        .time_step(1e-7, 1.0)
+        .unwrap()
+        .tolerating_unstable_contacts();
+    let paths = status_paths::<f64>();
+    let (mut one, mut blocks) = (law.at(dt), law.at(dt));
+    let mut out = ContactBlock::<f64, LANES>::default();
+    for chunk in paths.chunks(LANES) {
+        let mut block = PairBlock::default();
+        let mut states = [SpringDisplacement::preloaded(0); LANES];
+        let mut singles = states;
+        for (lane, (_, i, j)) in chunk.iter().enumerate() {
+            block.set(lane, i, j);
+        }
+        blocks.sphere_pairs(&block, &mut states, &mut out);
+        for (lane, (name, i, j)) in chunk.iter().enumerate() {
+            let outcome = CheckedSphere::new(*i).and_then(|i| {
+                let j = CheckedSphere::new(*j)?;
+                one.sphere_sphere(&i, &j, &mut singles[lane])
+            });
+            assert_eq!(out.outcome(lane), outcome, "{name}");
+            assert_eq!(states[lane], singles[lane], "{name}");
+            if *name == "too light for the step" {
+                assert!(matches!(outcome, Ok(Interaction::Touching(_))), "{name}");
+            }
+        }
+    }
+    assert_eq!(one.unstable_contacts(), 1);
+    assert_eq!(blocks.unstable_contacts(), 1);
 }
 
 /// The law of a random collision: `k_n` from its overlap fraction, the rest from its material.

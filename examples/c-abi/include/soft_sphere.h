@@ -85,6 +85,12 @@
 #define SS_ERR_POISSON_RATIO 14
 
 /**
+ * The contact is stiffer than the time step was checked for (a pair lighter than the declared
+ * mass, a Hertz overlap past the declared impact's): explicit integration would be unstable.
+ */
+#define SS_ERR_PAST_STABLE_STEP 15
+
+/**
  * The stateless (simplified) law: no tangential history is read or written.
  */
 #define SS_MODEL_STATELESS 0

@@ -60,6 +60,9 @@ pub const SS_ERR_NON_FINITE_RESULT: i32 = 12;
 pub const SS_ERR_BAD_WALL: i32 = 13;
 /// Poisson's ratio outside `(-1, 0.5]`.
 pub const SS_ERR_POISSON_RATIO: i32 = 14;
+/// The contact is stiffer than the time step was checked for (a pair lighter than the declared
+/// mass, a Hertz overlap past the declared impact's): explicit integration would be unstable.
+pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 
 /// The stateless (simplified) law: no tangential history is read or written.
 pub const SS_MODEL_STATELESS: i32 = 0;
@@ -151,6 +154,7 @@ fn contact_code(error: ContactError) -> i32 {
         ContactError::NonPositiveRadius => SS_ERR_NON_POSITIVE_RADIUS,
         ContactError::NonPositiveMass => SS_ERR_NON_POSITIVE_MASS,
         ContactError::CoincidentCentres => SS_ERR_COINCIDENT_CENTRES,
+        ContactError::PastStableStep => SS_ERR_PAST_STABLE_STEP,
         _ => SS_ERR_NON_FINITE_RESULT,
     }
 }

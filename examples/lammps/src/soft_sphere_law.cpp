@@ -130,6 +130,9 @@ const char *SoftSphere::contact_error(int code)
       return "the two centres coincide";
     case SS_ERR_NON_FINITE_RESULT:
       return "the contact force overflowed";
+    case SS_ERR_PAST_STABLE_STEP:
+      return "the contact is stiffer than the time step was checked for (unstable: shorten "
+             "the timestep)";
     default:
       return "the contact was rejected";
   }
