@@ -69,6 +69,13 @@ impl<F: Float> CheckedSphere<F> {
         }
     }
 
+    /// A sphere that the caller has just checked with [`check`] (the list seam checks every
+    /// sphere of a call once, then evaluates them).
+    #[inline(always)]
+    pub(crate) fn trusted(sphere: Sphere<F>) -> Self {
+        Self(sphere)
+    }
+
     /// The sphere.
     #[inline(always)]
     pub fn into_inner(self) -> Sphere<F> {

@@ -167,12 +167,15 @@ mod error;
 mod float;
 mod geometry;
 mod law;
+mod list;
 mod material;
+mod mixing;
 pub mod motion;
 mod normal;
 pub mod rolling;
 mod rotation;
 mod store;
+mod table;
 pub mod tangential;
 mod time_step;
 mod vector;
@@ -187,7 +190,12 @@ pub use error::{ContactError, Parameter, ParameterError};
 pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
+pub use list::{
+    ContactList, ContactRecord, ListArray, ListError, ListOutput, ListStats, MaterialWall,
+    SphereArrays,
+};
 pub use material::Material;
+pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
 pub use normal::{
     Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
     NormalOscillator,
@@ -195,6 +203,7 @@ pub use normal::{
 pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use store::{ContactHistory, ContactKey};
+pub use table::{MaterialTable, TableError};
 pub use tangential::{
     ContactState, Frictionless, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
     MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, SpringDisplacement,

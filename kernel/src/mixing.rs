@@ -89,7 +89,11 @@ impl<F: Float, T: TangentialModel<F>> Mixing<F> for LinearMixing<F, T> {
     type Properties = LinearMaterial<F>;
     type Law = ContactLaw<F, LinearSpringDashpot<F>, T>;
 
-    fn law(&self, i: &LinearMaterial<F>, j: &LinearMaterial<F>) -> Result<Self::Law, ParameterError> {
+    fn law(
+        &self,
+        i: &LinearMaterial<F>,
+        j: &LinearMaterial<F>,
+    ) -> Result<Self::Law, ParameterError> {
         let mix = |select: fn(&LinearMaterial<F>) -> F| geometric_mean(select(i), select(j));
         let normal = LinearSpringDashpot::new(mix(|m| m.normal_stiffness), mix(|m| m.restitution))?;
         let tangential = TangentialParameters::new(
