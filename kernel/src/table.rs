@@ -81,7 +81,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     /// `mixing.law(&materials[a], &materials[b])`.
     ///
     /// # Errors
-    /// [`TableError::Pair`] for the first pair (in row order) whose law refuses its mixed
+    /// [`TableError::Pair`] for the first material whose own law refuses its properties (as
+    /// the pair `[a, a]`), else the first pair in row order whose law refuses its mixed
     /// parameters.
     pub fn mixed<X: Mixing<L::Float, Law = L>>(
         mixing: &X,
@@ -96,8 +97,13 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
                 })
         };
         let mut table = Self::uniform(law(0, 0)?);
+        // Each material against itself first, so that a bad property is reported as its own
+        // material's, not as a mixed pair's (whose mean of it may not even be a number).
         for a in 0..M {
-            for b in a..M {
+            table.put(a, a, law(a, a)?);
+        }
+        for a in 0..M {
+            for b in a + 1..M {
                 table.put(a, b, law(a, b)?);
             }
         }

@@ -1,0 +1,865 @@
+//! The material table and the list seam: mixing rules against their closed forms, a whole
+//! contact list of a mixture giving the one-contact path's bits pair by pair, every bad input
+//! refused with its error and nothing changed, and the step checked against the spheres present.
+
+use host_tests::impact::floor;
+use host_tests::random::Xorshift;
+use proptest::prelude::*;
+use soft_sphere::{
+    ContactError, ContactLaw, ContactList, ContactRecord, ElasticMaterial, HertzImpact,
+    HertzMixing, Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray,
+    ListError, ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA,
+    Parameter, ParameterError, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
+    effective_mass,
+};
+
+type Linear = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type State = SpringDisplacement<f64>;
+
+fn glass() -> LinearMaterial<f64> {
+    LinearMaterial {
+        normal_stiffness: 1.0e4,
+        restitution: 0.9,
+        tangential_stiffness: 8.0e3,
+        dashpot_ratio: 0.5,
+        friction: 0.4,
+    }
+}
+
+fn rubber() -> LinearMaterial<f64> {
+    LinearMaterial {
+        normal_stiffness: 4.0e2,
+        restitution: 0.4,
+        tangential_stiffness: 3.0e2,
+        dashpot_ratio: 0.2,
+        friction: 0.9,
+    }
+}
+
+/// Glass, rubber, and a stiff floor material.
+fn table() -> MaterialTable<Linear, 3> {
+    MaterialTable::mixed(&LinearMixing::new(ModelAA), &[glass(), rubber(), steel()]).unwrap()
+}
+
+fn steel() -> LinearMaterial<f64> {
+    LinearMaterial {
+        normal_stiffness: 1.0e6,
+        friction: 0.2,
+        ..glass()
+    }
+}
+
+#[test]
+fn linear_mixing_takes_geometric_means_and_keeps_a_material_against_itself() {
+    let t = table();
+    let (g, r) = (glass(), rubber());
+    let mixed = t.law(0, 1).unwrap();
+    let close = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-15;
+    assert!(close(
+        mixed.normal().stiffness(),
+        (g.normal_stiffness * r.normal_stiffness).sqrt()
+    ));
+    assert!(close(mixed.normal().restitution(), (0.9_f64 * 0.4).sqrt()));
+    let p = mixed.tangential().0;
+    assert!(close(p.stiffness(), (8.0e3_f64 * 3.0e2).sqrt()));
+    assert!(close(p.dashpot_ratio(), (0.5_f64 * 0.2).sqrt()));
+    assert!(close(p.friction(), (0.4_f64 * 0.9).sqrt()));
+    // Symmetric, and a material against itself is that material exactly.
+    assert_eq!(format!("{:?}", t.law(1, 0)), format!("{:?}", t.law(0, 1)));
+    let own = t.law(1, 1).unwrap();
+    assert_eq!(own.normal().stiffness(), r.normal_stiffness);
+    assert_eq!(own.normal().restitution(), r.restitution);
+    assert_eq!(own.tangential().0.friction(), r.friction);
+    assert!(t.law(3, 0).is_none() && t.law(0, 3).is_none());
+}
+
+#[test]
+fn hertz_mixing_follows_hertz_and_mindlin() {
+    let steel = ElasticMaterial {
+        elasticity: Material::new(208.0e9_f64, 0.3).unwrap(),
+        restitution: 0.9,
+        dashpot_ratio: 0.0,
+        friction: 0.3,
+    };
+    let glass = ElasticMaterial {
+        elasticity: Material::new(63.0e9, 0.2).unwrap(),
+        restitution: 0.5,
+        dashpot_ratio: 0.0,
+        friction: 0.1,
+    };
+    let largest = HertzImpact {
+        speed: 2.0,
+        effective_radius: 1.0e-3,
+    };
+    let t = MaterialTable::mixed(&HertzMixing::new(largest, MindlinAA), &[steel, glass]).unwrap();
+    let law = t.law(0, 1).unwrap();
+    // 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2.
+    let e_star = 1.0 / ((1.0 - 0.09) / 208.0e9 + (1.0 - 0.04) / 63.0e9);
+    let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+    let g_star = 1.0 / ((2.0 - 0.3) / g(208.0e9, 0.3) + (2.0 - 0.2) / g(63.0e9, 0.2));
+    assert!((law.normal().effective_modulus() / e_star - 1.0).abs() < 1e-14);
+    assert!((law.normal().restitution() - (0.45_f64).sqrt()).abs() < 1e-15);
+    assert!((law.tangential().0.shear_modulus() / g_star - 1.0).abs() < 1e-14);
+    assert!((law.tangential().0.friction() - (0.03_f64).sqrt()).abs() < 1e-15);
+    assert_eq!(law.normal().largest_impact(), largest);
+}
+
+#[test]
+fn a_bad_material_or_pair_is_refused_with_its_place() {
+    let bad = LinearMaterial {
+        friction: -0.1,
+        ..rubber()
+    };
+    let refused =
+        MaterialTable::<Linear, 3>::mixed(&LinearMixing::new(ModelAA), &[glass(), glass(), bad]);
+    assert_eq!(
+        refused.unwrap_err(),
+        TableError::Pair {
+            materials: [2, 2],
+            error: ParameterError::Negative(Parameter::Friction),
+        }
+    );
+    let mut t = table();
+    let before = format!("{t:?}");
+    let other = LinearMixing::new(ModelAA).law(&glass(), &glass()).unwrap();
+    assert_eq!(
+        t.set(0, 3, other),
+        Err(TableError::MaterialOutOfRange { material: 3 })
+    );
+    assert_eq!(format!("{t:?}"), before, "a refused set changes nothing");
+    t.set(2, 1, other).unwrap();
+    assert_eq!(format!("{:?}", t.law(1, 2)), format!("{:?}", Some(other)));
+    assert_eq!(format!("{:?}", t.law(2, 1)), format!("{:?}", Some(other)));
+}
+
+/// A random mixture: spheres of two sizes and three materials in a box, jittered so that many
+/// touch, with random velocities and spins.
+#[derive(Clone, Debug)]
+struct Mixture {
+    position: Vec<Vec3<f64>>,
+    velocity: Vec<Vec3<f64>>,
+    angular_velocity: Vec<Vec3<f64>>,
+    radius: Vec<f64>,
+    mass: Vec<f64>,
+    material: Vec<u32>,
+    pairs: Vec<[u32; 2]>,
+}
+
+impl Mixture {
+    fn new(count: usize, seed: u64) -> Self {
+        let mut random = Xorshift::new(seed);
+        let mut r = |scale: f64| scale * (2.0 * random.unit() - 1.0);
+        let side = (count as f64).cbrt().ceil() as usize;
+        let mut m = Self {
+            position: Vec::new(),
+            velocity: Vec::new(),
+            angular_velocity: Vec::new(),
+            radius: Vec::new(),
+            mass: Vec::new(),
+            material: Vec::new(),
+            pairs: Vec::new(),
+        };
+        for k in 0..count {
+            let (x, y, z) = (k % side, (k / side) % side, k / (side * side));
+            let big = k % 3 == 0;
+            let radius = if big { 1.2e-3 } else { 0.8e-3 };
+            m.position.push(Vec3::new(
+                1.9e-3 * x as f64 + r(2e-4),
+                1.9e-3 * y as f64 + r(2e-4),
+                1.9e-3 * z as f64 + 2.0e-3 + r(2e-4),
+            ));
+            m.velocity.push(Vec3::new(r(0.05), r(0.05), r(0.05)));
+            m.angular_velocity
+                .push(Vec3::new(r(20.0), r(20.0), r(20.0)));
+            m.radius.push(radius);
+            m.mass
+                .push(2500.0 * 4.0 / 3.0 * std::f64::consts::PI * radius.powi(3));
+            m.material.push((k % 2) as u32 + u32::from(k % 5 == 0));
+        }
+        for i in 0..count {
+            for j in i + 1..count {
+                let d = m.position[j] - m.position[i];
+                if d.norm_squared() < (3.0e-3_f64).powi(2) {
+                    m.pairs.push([i as u32, j as u32]);
+                }
+            }
+        }
+        m
+    }
+
+    fn arrays(&self) -> SphereArrays<'_, f64> {
+        SphereArrays {
+            position: &self.position,
+            velocity: &self.velocity,
+            angular_velocity: &self.angular_velocity,
+            radius: &self.radius,
+            mass: &self.mass,
+            material: &self.material,
+        }
+    }
+
+    fn sphere(&self, k: usize) -> soft_sphere::Sphere<f64> {
+        soft_sphere::Sphere {
+            position: self.position[k],
+            velocity: self.velocity[k],
+            angular_velocity: self.angular_velocity[k],
+            radius: self.radius[k],
+            mass: self.mass[k],
+        }
+    }
+
+    /// A symplectic Euler step under `force` and `torque` (solid spheres), no gravity.
+    fn advance(&mut self, force: &[Vec3<f64>], torque: &[Vec3<f64>], dt: f64) {
+        for k in 0..self.position.len() {
+            let m = self.mass[k];
+            self.velocity[k] += force[k] * (dt / m);
+            let inertia = 0.4 * m * self.radius[k] * self.radius[k];
+            self.angular_velocity[k] += torque[k] * (dt / inertia);
+            self.position[k] += self.velocity[k] * dt;
+        }
+    }
+}
+
+fn floor_of(material: u32) -> MaterialWall<f64> {
+    MaterialWall {
+        wall: floor(),
+        material,
+    }
+}
+
+/// Everything one evaluation changes, as text (Debug prints the shortest decimal that reads back
+/// to the same float, so equal text is equal bits).
+fn bits<T: std::fmt::Debug>(value: &T) -> String {
+    format!("{value:?}")
+}
+
+/// The same step one contact at a time through the public one-contact path, forces added in
+/// list order.
+fn one_at_a_time(
+    table: &MaterialTable<Linear, 3>,
+    m: &Mixture,
+    walls: &[MaterialWall<f64>],
+    dt: soft_sphere::TimeStep<f64>,
+    (pair_states, wall_states): (&mut [State], &mut [State]),
+) -> Result<(Vec<Vec3<f64>>, Vec<Vec3<f64>>, Vec<Interaction<f64>>), ContactError> {
+    let n = m.position.len();
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut outcomes = Vec::new();
+    for (&[i, j], state) in m.pairs.iter().zip(pair_states.iter_mut()) {
+        let (i, j) = (i as usize, j as usize);
+        let law = table
+            .law(m.material[i] as usize, m.material[j] as usize)
+            .unwrap();
+        let outcome = law.sphere_sphere(&m.sphere(i), &m.sphere(j), state, dt)?;
+        if let Interaction::Touching(c) = outcome {
+            force[i] -= c.force_on_j();
+            torque[i] += c.torque_on_i;
+            force[j] += c.force_on_j();
+            torque[j] += c.torque_on_j;
+        }
+        outcomes.push(outcome);
+    }
+    for k in 0..n {
+        for (w, wall) in walls.iter().enumerate() {
+            let law = table
+                .law(m.material[k] as usize, wall.material as usize)
+                .unwrap();
+            let state = &mut wall_states[k * walls.len() + w];
+            let outcome = law.sphere_wall(&m.sphere(k), &wall.wall, state, dt)?;
+            if let Interaction::Touching(c) = outcome {
+                force[k] += c.force_on_i();
+                torque[k] += c.torque_on_i;
+            }
+            outcomes.push(outcome);
+        }
+    }
+    Ok((force, torque, outcomes))
+}
+
+#[test]
+fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
+    let t = table();
+    let mut m = Mixture::new(60, 7);
+    let walls = [floor_of(2), floor_of(1)];
+    let dt = t.time_step(2.0e-6, &m.arrays(), &walls).unwrap();
+    let n = m.position.len();
+    let mut states = vec![State::default(); m.pairs.len()];
+    let mut wall_states = vec![State::default(); n * walls.len()];
+    let (mut ref_states, mut ref_wall_states) = (states.clone(), wall_states.clone());
+    let mut records = vec![ContactRecord::default(); m.pairs.len() + n * walls.len()];
+    let (mut touching, mut mixed, mut sliding) = (0, 0, 0);
+    for step in 0..200 {
+        let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+        let list = ContactList {
+            pairs: &m.pairs,
+            pair_states: &mut states,
+            walls: &walls,
+            wall_states: &mut wall_states,
+        };
+        let out = ListOutput {
+            force: &mut force,
+            torque: &mut torque,
+            records: &mut records,
+        };
+        let stats = t.evaluate(dt, &m.arrays(), list, out).unwrap();
+        let (ref_force, ref_torque, outcomes) =
+            one_at_a_time(&t, &m, &walls, dt, (&mut ref_states, &mut ref_wall_states)).unwrap();
+        assert_eq!(bits(&force), bits(&ref_force), "step {step}: forces");
+        assert_eq!(bits(&torque), bits(&ref_torque), "step {step}: torques");
+        assert_eq!(bits(&states), bits(&ref_states), "step {step}: states");
+        assert_eq!(bits(&wall_states), bits(&ref_wall_states), "step {step}");
+        let seen: Vec<_> = records.iter().map(|r| *r.interaction()).collect();
+        assert_eq!(bits(&seen), bits(&outcomes), "step {step}: records");
+        let pairs_touching = outcomes[..m.pairs.len()]
+            .iter()
+            .filter(|o| o.forces().is_some())
+            .count();
+        assert_eq!(stats.pair_contacts, pairs_touching);
+        touching += stats.pair_contacts;
+        sliding += stats.sliding_contacts;
+        mixed += m
+            .pairs
+            .iter()
+            .zip(&outcomes)
+            .filter(|([i, j], o)| {
+                o.forces().is_some() && m.material[*i as usize] != m.material[*j as usize]
+            })
+            .count();
+        m.advance(&force, &torque, dt.seconds());
+    }
+    // The comparison covered what it claims: touching pairs of different materials, sliding.
+    assert!(
+        touching > 1000 && mixed > 300 && sliding > 10,
+        "{touching} {mixed} {sliding}"
+    );
+}
+
+/// A fresh list evaluation of `m` whose outcome is compared with what it leaves.
+fn try_evaluate(
+    t: &MaterialTable<Linear, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    pairs: &[[u32; 2]],
+    walls: &[MaterialWall<f64>],
+    dt: soft_sphere::TimeStep<f64>,
+) -> Result<(), ListError> {
+    let n = arrays.len();
+    let preload = |k: usize| State {
+        displacement: Vec3::new(0.0, 1e-7 * k as f64, 0.0),
+    };
+    let mut states: Vec<State> = (0..pairs.len()).map(preload).collect();
+    let mut wall_states: Vec<State> = (0..n * walls.len()).map(preload).collect();
+    let mut force: Vec<_> = (0..n).map(|k| Vec3::new(k as f64, 1.0, 2.0)).collect();
+    let mut torque = force.clone();
+    let before = bits(&(&states, &wall_states, &force, &torque));
+    let mut records = vec![ContactRecord::default(); pairs.len() + n * walls.len()];
+    let result = t.evaluate(
+        dt,
+        arrays,
+        ContactList {
+            pairs,
+            pair_states: &mut states,
+            walls,
+            wall_states: &mut wall_states,
+        },
+        ListOutput {
+            force: &mut force,
+            torque: &mut torque,
+            records: &mut records,
+        },
+    );
+    if result.is_err() {
+        let after = bits(&(&states, &wall_states, &force, &torque));
+        assert_eq!(after, before, "{result:?} changed the caller's arrays");
+    }
+    result.map(|_| ())
+}
+
+#[test]
+fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
+    let t = table();
+    let m = Mixture::new(20, 3);
+    let walls = [floor_of(2)];
+    let dt = t.time_step(1.0e-6, &m.arrays(), &walls).unwrap();
+    assert_eq!(try_evaluate(&t, &m.arrays(), &m.pairs, &walls, dt), Ok(()));
+    // Lengths, one array at a time.
+    let short = &m.position[..19];
+    let cases: [(SphereArrays<'_, f64>, ListArray); 5] = [
+        (
+            SphereArrays {
+                velocity: short,
+                ..m.arrays()
+            },
+            ListArray::Velocity,
+        ),
+        (
+            SphereArrays {
+                angular_velocity: short,
+                ..m.arrays()
+            },
+            ListArray::AngularVelocity,
+        ),
+        (
+            SphereArrays {
+                radius: &m.radius[1..],
+                ..m.arrays()
+            },
+            ListArray::Radius,
+        ),
+        (
+            SphereArrays {
+                mass: &m.mass[1..],
+                ..m.arrays()
+            },
+            ListArray::Mass,
+        ),
+        (
+            SphereArrays {
+                material: &m.material[1..],
+                ..m.arrays()
+            },
+            ListArray::Material,
+        ),
+    ];
+    for (arrays, array) in cases {
+        assert_eq!(
+            try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
+            Err(ListError::Length(array))
+        );
+        assert_eq!(
+            t.time_step(1.0e-6, &arrays, &walls),
+            Err(ListError::Length(array))
+        );
+    }
+    // The caller's own buffers of the wrong length.
+    let n = m.position.len();
+    let mut states = vec![State::default(); m.pairs.len()];
+    let mut wall_states = vec![State::default(); n];
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut records = vec![ContactRecord::default(); m.pairs.len() + n];
+    let mut run = |cut: usize| {
+        let (p, w) = (states.len(), wall_states.len());
+        let (f, r) = (force.len(), records.len());
+        t.evaluate(
+            dt,
+            &m.arrays(),
+            ContactList {
+                pairs: &m.pairs,
+                pair_states: &mut states[..p - usize::from(cut == 0)],
+                walls: &walls,
+                wall_states: &mut wall_states[..w - usize::from(cut == 1)],
+            },
+            ListOutput {
+                force: &mut force[..f - usize::from(cut == 2)],
+                torque: &mut torque[..f - usize::from(cut == 3)],
+                records: &mut records[..r - usize::from(cut == 4)],
+            },
+        )
+    };
+    let expected = [
+        ListArray::PairStates,
+        ListArray::WallStates,
+        ListArray::Force,
+        ListArray::Torque,
+        ListArray::Records,
+    ];
+    for (cut, array) in expected.into_iter().enumerate() {
+        assert_eq!(run(cut), Err(ListError::Length(array)));
+    }
+    assert!(run(5).is_ok());
+    // A material past the table, a sphere's or a wall's.
+    let mut material = m.material.clone();
+    material[7] = 3;
+    let arrays = SphereArrays {
+        material: &material,
+        ..m.arrays()
+    };
+    let refused = Err(ListError::Material {
+        sphere: 7,
+        material: 3,
+    });
+    assert_eq!(try_evaluate(&t, &arrays, &m.pairs, &walls, dt), refused);
+    assert_eq!(t.time_step(1.0e-6, &arrays, &walls).map(|_| ()), refused);
+    let bad_wall = [floor_of(2), floor_of(9)];
+    let refused = Err(ListError::WallMaterial {
+        wall: 1,
+        material: 9,
+    });
+    assert_eq!(
+        try_evaluate(&t, &m.arrays(), &m.pairs, &bad_wall, dt),
+        refused
+    );
+    // Invalid spheres, reported before any contact is evaluated.
+    for (field, error) in [
+        (0, ContactError::NonFiniteInput),
+        (1, ContactError::NonPositiveRadius),
+        (2, ContactError::NonPositiveMass),
+    ] {
+        let (mut position, mut radius, mut mass) =
+            (m.position.clone(), m.radius.clone(), m.mass.clone());
+        match field {
+            0 => position[11].z = f64::NAN,
+            1 => radius[11] = 0.0,
+            _ => mass[11] = -1.0,
+        }
+        let arrays = SphereArrays {
+            position: &position,
+            radius: &radius,
+            mass: &mass,
+            ..m.arrays()
+        };
+        assert_eq!(
+            try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
+            Err(ListError::Sphere { sphere: 11, error })
+        );
+    }
+    // A pair naming a sphere past the arrays.
+    let mut pairs = m.pairs.clone();
+    pairs[3] = [2, 20];
+    assert_eq!(
+        try_evaluate(&t, &m.arrays(), &pairs, &walls, dt),
+        Err(ListError::PairIndex { pair: 3 })
+    );
+    // A contact refused: coincident centres, then an overflowing force, each with its pair.
+    let mut pairs = m.pairs.clone();
+    pairs[5] = [4, 4];
+    assert_eq!(
+        try_evaluate(&t, &m.arrays(), &pairs, &walls, dt),
+        Err(ListError::Pair {
+            pair: 5,
+            error: ContactError::CoincidentCentres
+        })
+    );
+    let mut velocity = m.velocity.clone();
+    let [i, j] = m.pairs[0];
+    velocity[i as usize].x = 1.7e308;
+    velocity[j as usize].x = -1.7e308;
+    let arrays = SphereArrays {
+        velocity: &velocity,
+        ..m.arrays()
+    };
+    let refused = try_evaluate(&t, &arrays, &m.pairs, &walls, dt);
+    assert!(
+        matches!(
+            refused,
+            Err(ListError::Pair {
+                error: ContactError::NonFiniteResult,
+                ..
+            }) | Err(ListError::Wall {
+                error: ContactError::NonFiniteResult,
+                ..
+            })
+        ),
+        "{refused:?}"
+    );
+    // A sphere sunk into the floor too deep for the step: the wall contact with its place.
+    let mut position = m.position.clone();
+    position[13].z = -1.0;
+    let arrays = SphereArrays {
+        position: &position,
+        ..m.arrays()
+    };
+    assert!(matches!(
+        try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
+        Ok(())
+            | Err(ListError::Wall {
+                sphere: 13,
+                wall: 0,
+                ..
+            })
+    ));
+}
+
+#[test]
+fn the_step_is_checked_against_every_material_pair_and_wall_present() {
+    let t = table();
+    let m = Mixture::new(30, 11);
+    // Glass and rubber spheres only; steel is the floor's material.
+    let two: Vec<u32> = m.material.iter().map(|&k| k.min(1)).collect();
+    let spheres = SphereArrays {
+        material: &two,
+        ..m.arrays()
+    };
+    // Each mode's explicit-integration limit in closed form, 2 (sqrt(1 + z^2) - z) / w, for the
+    // mixed coefficients: the normal mode on m*, the tangential spring on 2/7 m*.
+    let limit = |a: &LinearMaterial<f64>, b: &LinearMaterial<f64>, m_star: f64| {
+        let bound = |w: f64, z: f64| 2.0 / w * ((1.0 + z * z).sqrt() - z);
+        let k = (a.normal_stiffness * b.normal_stiffness).sqrt();
+        let e = (a.restitution * b.restitution).sqrt();
+        let zeta = e.ln().abs() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
+        let kt = (a.tangential_stiffness * b.tangential_stiffness).sqrt();
+        let eta_t = (a.dashpot_ratio * b.dashpot_ratio).sqrt() * 2.0 * zeta * (m_star * k).sqrt();
+        let mt = 2.0 / 7.0 * m_star;
+        let wt = (kt / mt).sqrt();
+        bound((k / m_star).sqrt(), zeta).min(bound(wt, eta_t / (2.0 * mt * wt)))
+    };
+    let lightest = |material: u32| {
+        m.mass
+            .iter()
+            .zip(&two)
+            .filter(|(_, k)| **k == material)
+            .map(|(&mass, _)| mass)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let materials = [glass(), rubber(), steel()];
+    let pair_limit = |a: u32, b: u32| {
+        let m_star = effective_mass(lightest(a), lightest(b));
+        limit(&materials[a as usize], &materials[b as usize], m_star)
+    };
+    let smallest = pair_limit(0, 0).min(pair_limit(0, 1)).min(pair_limit(1, 1));
+    // Just below the smallest pair limit: accepted; just above: refused, naming a pair.
+    assert!(t.time_step(0.999 * smallest, &spheres, &[]).is_ok());
+    let refused = t.time_step(1.001 * smallest, &spheres, &[]);
+    assert!(
+        matches!(
+            refused,
+            Err(ListError::TimeStep {
+                error: ParameterError::TimeStepUnstable { .. },
+                ..
+            })
+        ),
+        "{refused:?}"
+    );
+    // A steel floor is stiffer than any pair: a step inside every pair's limit is refused with
+    // the wall's material second, while a rubber floor passes.
+    let wall_limit = (0..2u32)
+        .map(|a| limit(&materials[a as usize], &steel(), lightest(a)))
+        .fold(f64::INFINITY, f64::min);
+    assert!(wall_limit < 0.85 * smallest, "{wall_limit} {smallest}");
+    let step = 0.9 * smallest;
+    assert!(t.time_step(step, &spheres, &[floor_of(1)]).is_ok());
+    let refused = t.time_step(step, &spheres, &[floor_of(1), floor_of(2)]);
+    assert!(
+        matches!(
+            refused,
+            Err(ListError::TimeStep {
+                materials: [_, 2],
+                ..
+            })
+        ),
+        "{refused:?}"
+    );
+    assert!(
+        t.time_step(0.999 * wall_limit, &spheres, &[floor_of(2)])
+            .is_ok()
+    );
+    assert!(
+        t.time_step(1.001 * wall_limit, &spheres, &[floor_of(2)])
+            .is_err()
+    );
+    // A material not present does not limit the step: glass spheres alone, with their own
+    // lightest pair.
+    let only_glass = vec![0u32; m.position.len()];
+    let arrays = SphereArrays {
+        material: &only_glass,
+        ..m.arrays()
+    };
+    let light = m.mass.iter().copied().fold(f64::INFINITY, f64::min);
+    let glass_limit = limit(&glass(), &glass(), light / 2.0);
+    assert!(glass_limit > smallest);
+    assert!(t.time_step(0.999 * glass_limit, &arrays, &[]).is_ok());
+    assert!(t.time_step(1.001 * glass_limit, &arrays, &[]).is_err());
+    // A bad step is refused whatever is present; the recommended step is accepted.
+    assert!(matches!(
+        t.time_step(-1.0, &spheres, &[]),
+        Err(ListError::TimeStep {
+            error: ParameterError::NotPositive(Parameter::TimeStep),
+            ..
+        })
+    ));
+    let walls = [floor_of(2)];
+    let recommended = t.recommended_time_step(&spheres, &walls).unwrap().unwrap();
+    assert!(t.time_step(recommended, &spheres, &walls).is_ok());
+    assert!(recommended <= 0.2 * wall_limit * 1.0001);
+    let none = SphereArrays {
+        position: &[],
+        velocity: &[],
+        angular_velocity: &[],
+        radius: &[],
+        mass: &[],
+        material: &[],
+    };
+    assert_eq!(t.recommended_time_step(&none, &walls), Ok(None));
+}
+
+#[test]
+fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
+    let elastic = |e: f64| ElasticMaterial {
+        elasticity: Material::new(e, 0.3).unwrap(),
+        restitution: 0.7,
+        dashpot_ratio: 0.5,
+        friction: 0.3,
+    };
+    let largest = HertzImpact {
+        speed: 1.0,
+        effective_radius: 5.0e-4,
+    };
+    let t = MaterialTable::mixed(
+        &HertzMixing::new(largest, MindlinAA),
+        &[elastic(1.0e8), elastic(5.0e8)],
+    )
+    .unwrap();
+    let mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1.0e-9;
+    let position = [
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(2.0e-3, 0.0, 0.0),
+        Vec3::new(4.0e-3, 0.0, 0.0),
+    ];
+    let run = |speed: f64| -> Result<usize, ListError> {
+        let mut p = position.to_vec();
+        let mut v = vec![
+            Vec3::new(speed / 2.0, 0.0, 0.0),
+            Vec3::new(-speed / 2.0, 0.0, 0.0),
+            Vec3::ZERO,
+        ];
+        let w = vec![Vec3::ZERO; 3];
+        let (radius, masses, material) = ([1.0e-3; 3], [mass; 3], [0u32, 1, 1]);
+        let arrays = |p: &[Vec3<f64>], v: &[Vec3<f64>]| -> (Vec<Vec3<f64>>, Vec<Vec3<f64>>) {
+            (p.to_vec(), v.to_vec())
+        };
+        let (p0, v0) = arrays(&p, &v);
+        let spheres = SphereArrays {
+            position: &p0,
+            velocity: &v0,
+            angular_velocity: &w,
+            radius: &radius,
+            mass: &masses,
+            material: &material,
+        };
+        let m_star = effective_mass(mass, mass);
+        let smallest = [(0, 0), (0, 1), (1, 1)]
+            .map(|(a, b)| t.law(a, b).unwrap().critical_time_step(m_star))
+            .into_iter()
+            .fold(f64::INFINITY, f64::min);
+        let step = t.time_step(0.9 * smallest, &spheres, &[])?;
+        let dt = step.seconds();
+        let pairs = [[0u32, 1], [1, 2]];
+        let mut states = [Default::default(); 2];
+        let mut records = [ContactRecord::default(); 2];
+        let mut touched = 0;
+        for _ in 0..200_000 {
+            let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
+            let spheres = SphereArrays {
+                position: &p,
+                velocity: &v,
+                angular_velocity: &w,
+                radius: &radius,
+                mass: &masses,
+                material: &material,
+            };
+            let stats = t.evaluate(
+                step,
+                &spheres,
+                ContactList {
+                    pairs: &pairs,
+                    pair_states: &mut states,
+                    walls: &[],
+                    wall_states: &mut [],
+                },
+                ListOutput {
+                    force: &mut force,
+                    torque: &mut torque,
+                    records: &mut records,
+                },
+            )?;
+            touched += stats.pair_contacts;
+            for k in 0..3 {
+                v[k] += force[k] * (dt / mass);
+                p[k] += v[k] * dt;
+            }
+            if touched > 0 && stats.pair_contacts == 0 {
+                break;
+            }
+        }
+        Ok(touched)
+    };
+    assert!(run(1.0).unwrap() > 0);
+    assert_eq!(
+        run(60.0),
+        Err(ListError::Pair {
+            pair: 0,
+            error: ContactError::PastStableStep
+        })
+    );
+}
+
+proptest! {
+    #![proptest_config(host_tests::strategies::config())]
+
+    /// Arbitrary bits in every array and pair: a result or an error, never a panic, and on an
+    /// error nothing the caller gave has changed (checked inside `try_evaluate`).
+    #[test]
+    fn arbitrary_arrays_give_a_result_or_an_error(
+        words in prop::collection::vec(any::<u64>(), 48),
+        pair_words in prop::collection::vec((0u32..6, 0u32..6), 0..6),
+        materials in prop::collection::vec(0u32..4, 4),
+    ) {
+        let t = table();
+        let f = |k: usize| f64::from_bits(words[k]);
+        let v = |k: usize| Vec3::new(f(k), f(k + 1), f(k + 2));
+        let position: Vec<_> = (0..4).map(|k| v(3 * k)).collect();
+        let velocity: Vec<_> = (0..4).map(|k| v(12 + 3 * k)).collect();
+        let angular_velocity: Vec<_> = (0..4).map(|k| v(24 + 3 * k)).collect();
+        let radius: Vec<_> = (0..4).map(|k| f(36 + k)).collect();
+        let mass: Vec<_> = (0..4).map(|k| f(40 + k)).collect();
+        let arrays = SphereArrays {
+            position: &position, velocity: &velocity, angular_velocity: &angular_velocity,
+            radius: &radius, mass: &mass, material: &materials,
+        };
+        let pairs: Vec<[u32; 2]> = pair_words.iter().map(|&(i, j)| [i, j]).collect();
+        let walls = [floor_of(2)];
+        let dt = t.time_step(1e-7, &SphereArrays {
+            position: &[Vec3::ZERO], velocity: &[Vec3::ZERO], angular_velocity: &[Vec3::ZERO],
+            radius: &[1e-3], mass: &[1e-5], material: &[0],
+        }, &walls).unwrap();
+        let _ = try_evaluate(&t, &arrays, &pairs, &walls, dt);
+        let _ = t.time_step(1e-7, &arrays, &walls);
+        let _ = t.recommended_time_step(&arrays, &walls);
+    }
+}
+
+#[test]
+fn an_empty_list_and_walls_alone_work() {
+    let t = table();
+    let position = [Vec3::new(0.0, 0.0, 0.99e-3)];
+    let zero = [Vec3::ZERO];
+    let arrays = SphereArrays {
+        position: &position,
+        velocity: &zero,
+        angular_velocity: &zero,
+        radius: &[1.0e-3],
+        mass: &[1.0e-5],
+        material: &[1],
+    };
+    let walls = [floor_of(0)];
+    let dt = t.time_step(1.0e-6, &arrays, &walls).unwrap();
+    let mut wall_states = [State::default()];
+    let (mut force, mut torque) = ([Vec3::ZERO], [Vec3::ZERO]);
+    let mut records = [ContactRecord::default()];
+    let stats = t
+        .evaluate(
+            dt,
+            &arrays,
+            ContactList {
+                pairs: &[],
+                pair_states: &mut [],
+                walls: &walls,
+                wall_states: &mut wall_states,
+            },
+            ListOutput {
+                force: &mut force,
+                torque: &mut torque,
+                records: &mut records,
+            },
+        )
+        .unwrap();
+    assert_eq!((stats.pair_contacts, stats.wall_contacts), (0, 1));
+    // The rubber sphere on a glass floor: the mixed spring pushes it up by k_n delta.
+    let k = (glass().normal_stiffness * rubber().normal_stiffness).sqrt();
+    assert!(
+        (force[0].z / (k * 1.0e-5) - 1.0).abs() < 1e-9,
+        "{:?}",
+        force[0]
+    );
+    assert!(matches!(records[0].interaction(), Interaction::Touching(_)));
+    let _ = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0));
+}
