@@ -646,18 +646,18 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
         t.time_step(1.001 * wall_limit, &spheres, &[floor_of(2)])
             .is_err()
     );
-    // A material not present does not limit the step: glass spheres alone, with their own
-    // lightest pair.
-    let only_glass = vec![0u32; m.position.len()];
+    // A material not present does not limit the step: rubber spheres alone, with their own
+    // lightest pair, take a longer step than glass allows.
+    let only_rubber = vec![1u32; m.position.len()];
     let arrays = SphereArrays {
-        material: &only_glass,
+        material: &only_rubber,
         ..m.arrays()
     };
     let light = m.mass.iter().copied().fold(f64::INFINITY, f64::min);
-    let glass_limit = limit(&glass(), &glass(), light / 2.0);
-    assert!(glass_limit > smallest);
-    assert!(t.time_step(0.999 * glass_limit, &arrays, &[]).is_ok());
-    assert!(t.time_step(1.001 * glass_limit, &arrays, &[]).is_err());
+    let rubber_limit = limit(&rubber(), &rubber(), light / 2.0);
+    assert!(rubber_limit > 2.0 * smallest);
+    assert!(t.time_step(0.999 * rubber_limit, &arrays, &[]).is_ok());
+    assert!(t.time_step(1.001 * rubber_limit, &arrays, &[]).is_err());
     // A bad step is refused whatever is present; the recommended step is accepted.
     assert!(matches!(
         t.time_step(-1.0, &spheres, &[]),
