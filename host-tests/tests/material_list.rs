@@ -9,7 +9,7 @@ use soft_sphere::{
     ContactError, ContactLaw, ContactList, ContactRecord, ElasticMaterial, HertzImpact,
     HertzMixing, Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray,
     ListError, ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA,
-    Parameter, ParameterError, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
+    Parameter, ParameterError, Route, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
     effective_mass,
 };
 
@@ -278,6 +278,12 @@ fn one_at_a_time(
 
 #[test]
 fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
+    for route in ROUTES {
+        mixture_bits(route);
+    }
+}
+
+fn mixture_bits(route: Route) {
     let t = table();
     let mut m = Mixture::new(60, 7);
     let walls = [floor_of(2), floor_of(1)];
@@ -301,7 +307,7 @@ fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
             torque: &mut torque,
             records: &mut records,
         };
-        let stats = t.evaluate(dt, &m.arrays(), list, out).unwrap();
+        let stats = t.evaluate_by(route, dt, &m.arrays(), list, out).unwrap();
         let (ref_force, ref_torque, outcomes) =
             one_at_a_time(&t, &m, &walls, dt, (&mut ref_states, &mut ref_wall_states)).unwrap();
         assert_eq!(bits(&force), bits(&ref_force), "step {step}: forces");
@@ -334,8 +340,24 @@ fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
     );
 }
 
-/// A fresh list evaluation of `m` whose outcome is compared with what it leaves.
+/// A fresh list evaluation by every route, whose outcomes must agree, each compared with what
+/// it leaves.
 fn try_evaluate(
+    t: &MaterialTable<Linear, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    pairs: &[[u32; 2]],
+    walls: &[MaterialWall<f64>],
+    dt: soft_sphere::TimeStep<f64>,
+) -> Result<(), ListError> {
+    let outcomes = ROUTES.map(|route| try_route(route, t, arrays, pairs, walls, dt));
+    assert!(outcomes.iter().all(|o| *o == outcomes[0]), "{outcomes:?}");
+    outcomes[0]
+}
+
+const ROUTES: [Route; 3] = [Route::Auto, Route::Blocks, Route::OneAtATime];
+
+fn try_route(
+    route: Route,
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
     pairs: &[[u32; 2]],
@@ -352,7 +374,8 @@ fn try_evaluate(
     let mut torque = force.clone();
     let before = bits(&(&states, &wall_states, &force, &torque));
     let mut records = vec![ContactRecord::default(); pairs.len() + n * walls.len()];
-    let result = t.evaluate(
+    let result = t.evaluate_by(
+        route,
         dt,
         arrays,
         ContactList {
@@ -369,7 +392,10 @@ fn try_evaluate(
     );
     if result.is_err() {
         let after = bits(&(&states, &wall_states, &force, &torque));
-        assert_eq!(after, before, "{result:?} changed the caller's arrays");
+        assert_eq!(
+            after, before,
+            "{route:?}: {result:?} changed the caller's arrays"
+        );
     }
     result.map(|_| ())
 }
@@ -526,6 +552,23 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         try_evaluate(&t, &m.arrays(), &pairs, &walls, dt),
         Err(ListError::Pair {
             pair: 5,
+            error: ContactError::CoincidentCentres
+        })
+    );
+    // Several refused: the first in list order, whatever the materials' order in a block.
+    let long = Mixture::new(60, 5);
+    let dt_long = t.time_step(1.0e-6, &long.arrays(), &walls).unwrap();
+    assert!(long.pairs.len() > 300, "{}", long.pairs.len());
+    let mut pairs = long.pairs.clone();
+    let by_material = |material: u32| (0..60u32).find(|&k| long.material[k as usize] == material);
+    let (glass_sphere, steel_sphere) = (by_material(0).unwrap(), by_material(2).unwrap());
+    pairs[290] = [steel_sphere, steel_sphere];
+    pairs[270] = [glass_sphere, glass_sphere];
+    pairs[260] = [glass_sphere, 59];
+    assert_eq!(
+        try_evaluate(&t, &long.arrays(), &pairs, &walls, dt_long),
+        Err(ListError::Pair {
+            pair: 270,
             error: ContactError::CoincidentCentres
         })
     );

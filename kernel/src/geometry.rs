@@ -50,12 +50,26 @@ pub(crate) struct Separation<F> {
 impl<F: Float> Separation<F> {
     #[inline(always)]
     pub(crate) fn of(i: &Sphere<F>, j: &Sphere<F>) -> Self {
-        let offset = j.position - i.position;
+        Self::between((i.position, i.radius), (j.position, j.radius))
+    }
+
+    /// The separation of spheres at these centres with these radii (the same bits as
+    /// [`Separation::of`] on spheres that have them).
+    #[inline(always)]
+    pub(crate) fn between((at_i, radius_i): (Vec3<F>, F), (at_j, radius_j): (Vec3<F>, F)) -> Self {
+        let offset = at_j - at_i;
         Self {
             offset,
             distance_squared: offset.norm_squared(),
-            reach: i.radius + j.radius,
+            reach: radius_i + radius_j,
         }
+    }
+
+    /// Whether the one-contact path evaluates the pair (overlapping, or coincident: an error)
+    /// rather than answering apart.
+    #[inline(always)]
+    pub(crate) fn needs_evaluation(&self) -> bool {
+        !self.apart() || self.coincident()
     }
 
     /// The centres are too close for a contact normal.

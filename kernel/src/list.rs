@@ -9,15 +9,31 @@
 //! the spheres present ([`MaterialTable::time_step`]): every pair of materials present at the
 //! smallest effective mass its spheres give, and every wall's material.
 
+use crate::batch::{ContactBlock, LANES, PairBlock};
 use crate::body::{Sphere, Wall, effective_mass};
 use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::Float;
+use crate::geometry::Separation;
 use crate::law::Interaction;
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
+
+/// How [`MaterialTable::evaluate_by`] evaluates the touching pairs: the same results by every
+/// route.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Route {
+    /// Blocks where the law vectorises ([`Law::VECTORISES`]: its tangential slot computes every
+    /// lane without branching, and the build has 256-bit vectors), else one at a time.
+    #[default]
+    Auto,
+    /// Sorted by pair of materials into blocks of [`LANES`] through the batch path.
+    Blocks,
+    /// One pair at a time through the one-contact path.
+    OneAtATime,
+}
 
 /// The engine's spheres, as its own arrays: sphere `k` is entry `k` of each. Every array must
 /// be as long as `position`.
@@ -441,6 +457,27 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
+        self.evaluate_by(Route::Auto, time_step, spheres, list, out)
+    }
+
+    /// [`MaterialTable::evaluate`] by a chosen [`Route`]: the same bits, states, records and
+    /// errors by any route; only the speed differs.
+    ///
+    /// # Errors
+    /// As [`MaterialTable::evaluate`].
+    pub fn evaluate_by(
+        &self,
+        route: Route,
+        time_step: TimeStep<L::Float>,
+        spheres: &SphereArrays<'_, L::Float>,
+        list: ContactList<'_, L::Float, L::State>,
+        out: ListOutput<'_, L::Float, L::State>,
+    ) -> Result<ListStats<L::Float>, ListError> {
+        let blocks = match route {
+            Route::Auto => L::VECTORISES,
+            Route::Blocks => true,
+            Route::OneAtATime => false,
+        };
         let n = spheres.len();
         let (pairs, walls) = (list.pairs, list.walls);
         let lengths = [
@@ -476,22 +513,40 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         // The checks above made every sphere valid: no sphere is checked again.
         let sphere = |k: usize| CheckedSphere::trusted(spheres.sphere(k));
         let material = |k: usize| spheres.material[k] as usize;
-        for (k, ((&[i, j], state), record)) in pairs
-            .iter()
-            .zip(list.pair_states.iter())
-            .zip(pair_records.iter_mut())
-            .enumerate()
-        {
-            let (i, j) = (i as usize, j as usize);
-            let mut next = *state;
-            let law = &mut bound[material(i)][material(j)];
-            let interaction = law
-                .sphere_sphere(&sphere(i), &sphere(j), &mut next)
-                .map_err(|error| ListError::Pair { pair: k, error })?;
-            *record = ContactRecord {
-                interaction,
-                state: next,
+        let mut staged = Staged::new();
+        for (c, chunk) in pairs.chunks(SIFT).enumerate() {
+            let first = c * SIFT;
+            let states = &list.pair_states[first..first + chunk.len()];
+            let records = &mut pair_records[first..first + chunk.len()];
+            let failed = if blocks {
+                staged.in_blocks(spheres, chunk, states, records, &mut bound)
+            } else {
+                let mut failed = None;
+                for k in sift(spheres, chunk, records, &mut staged.touching) {
+                    let [i, j] = chunk[k].map(|x| x as usize);
+                    let mut next = states[k];
+                    let law = &mut bound[material(i)][material(j)];
+                    match law.sphere_sphere(&sphere(i), &sphere(j), &mut next) {
+                        Ok(interaction) => {
+                            records[k] = ContactRecord {
+                                interaction,
+                                state: next,
+                            }
+                        }
+                        Err(error) => {
+                            failed = Some((k, error));
+                            break;
+                        }
+                    }
+                }
+                failed
             };
+            if let Some((k, error)) = failed {
+                return Err(ListError::Pair {
+                    pair: first + k,
+                    error,
+                });
+            }
         }
         if !walls.is_empty() {
             for (k, (states, records)) in list
@@ -564,4 +619,158 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         }
         Ok(stats)
     }
+}
+
+/// Candidate pairs sifted for contact at a time.
+const SIFT: usize = 256;
+
+/// Blocks gathered before the first is evaluated (as the scene does: a block read as vectors
+/// straight after its lanes were stored one by one waits on every load).
+const GROUP: usize = 8;
+
+/// The places in `chunk` of the pairs the one-contact path would evaluate (overlapping or
+/// coincident), into `touching`; every other pair's record is set to apart with a reset state,
+/// as that path answers. Sifting first keeps the coin toss of touching or not out of the
+/// contact evaluation's branches.
+#[inline(always)]
+fn sift<'t, F: Float, S: Default>(
+    spheres: &SphereArrays<'_, F>,
+    chunk: &[[u32; 2]],
+    records: &mut [ContactRecord<F, S>],
+    touching: &'t mut [u16; SIFT],
+) -> impl Iterator<Item = usize> + 't {
+    let mut found = 0;
+    for (k, (&[i, j], record)) in chunk.iter().zip(records.iter_mut()).enumerate() {
+        let (i, j) = (i as usize, j as usize);
+        let separation = Separation::between(
+            (spheres.position[i], spheres.radius[i]),
+            (spheres.position[j], spheres.radius[j]),
+        );
+        *record = ContactRecord::default();
+        touching[found] = k as u16;
+        found += usize::from(separation.needs_evaluation());
+    }
+    touching[..found].iter().map(|&k| usize::from(k))
+}
+
+/// The working memory of the block route: sifted places, sorted by pair of materials, and a
+/// group of gathered blocks.
+struct Staged<F: Float, S> {
+    touching: [u16; SIFT],
+    sorted: [u16; SIFT],
+    blocks: [PairBlock<F, LANES>; GROUP],
+    states: [[S; LANES]; GROUP],
+    out: ContactBlock<F, LANES>,
+}
+
+impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
+    fn new() -> Self {
+        Self {
+            touching: [0; SIFT],
+            sorted: [0; SIFT],
+            blocks: [PairBlock::default(); GROUP],
+            states: [[S::default(); LANES]; GROUP],
+            out: ContactBlock::default(),
+        }
+    }
+
+    /// One chunk through the batch path: sifted, sorted by pair of materials (a block holds
+    /// one law), gathered in groups of blocks straight from the arrays, evaluated, and each
+    /// touching pair's outcome and next state written to its record. Returns the first failed
+    /// pair in list order (its place in the chunk) and its error.
+    #[inline(always)]
+    fn in_blocks<L: Law<Float = F, State = S>, const M: usize>(
+        &mut self,
+        spheres: &SphereArrays<'_, F>,
+        chunk: &[[u32; 2]],
+        states: &[S],
+        records: &mut [ContactRecord<F, S>],
+        bound: &mut [[BoundLaw<'_, L>; M]; M],
+    ) -> Option<(usize, ContactError)> {
+        let material = |k: usize| spheres.material[k] as usize;
+        let key = |k: usize| {
+            let [i, j] = chunk[k].map(|x| material(x as usize));
+            (i.min(j), i.max(j))
+        };
+        // A counting sort by pair of materials, stable, so each pair's run keeps list order.
+        let mut counts = [[0usize; M]; M];
+        let mut found = 0;
+        for k in sift(spheres, chunk, records, &mut self.touching) {
+            let (a, b) = key(k);
+            counts[a][b] += 1;
+            found += 1;
+        }
+        let mut starts = [[0usize; M]; M];
+        let mut next = 0;
+        for (row, starts) in counts.iter().zip(starts.iter_mut()) {
+            for (count, start) in row.iter().zip(starts.iter_mut()) {
+                *start = next;
+                next += count;
+            }
+        }
+        let mut place = starts;
+        for &k in &self.touching[..found] {
+            let (a, b) = key(usize::from(k));
+            self.sorted[place[a][b]] = k;
+            place[a][b] += 1;
+        }
+        let mut failed: Option<(usize, ContactError)> = None;
+        for (a, row) in counts.iter().enumerate() {
+            for (b, &count) in row.iter().enumerate() {
+                let run = &self.sorted[starts[a][b]..starts[a][b] + count];
+                for group in run.chunks(LANES * GROUP) {
+                    let blocks = group.chunks(LANES);
+                    for ((lanes, block), block_states) in
+                        blocks.clone().zip(&mut self.blocks).zip(&mut self.states)
+                    {
+                        for lane in 0..LANES {
+                            match lanes.get(lane) {
+                                Some(&k) => {
+                                    let [i, j] = chunk[usize::from(k)].map(|x| x as usize);
+                                    block.set(lane, &spheres.sphere(i), &spheres.sphere(j));
+                                    block_states[lane] = states[usize::from(k)];
+                                }
+                                // An unused lane: spheres of no size, refused and ignored.
+                                None => block.set(lane, &Sphere::default(), &Sphere::default()),
+                            }
+                        }
+                    }
+                    for ((lanes, block), block_states) in
+                        blocks.zip(&self.blocks).zip(&mut self.states)
+                    {
+                        evaluate_block(&mut bound[a][b], block, block_states, &mut self.out);
+                        for (lane, &k) in lanes.iter().enumerate() {
+                            let k = usize::from(k);
+                            match self.out.outcome(lane) {
+                                Ok(interaction) => {
+                                    records[k] = ContactRecord {
+                                        interaction,
+                                        state: block_states[lane],
+                                    }
+                                }
+                                Err(error) => {
+                                    if failed.is_none_or(|(first, _)| k < first) {
+                                        failed = Some((k, error));
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        failed
+    }
+}
+
+/// One block through the kernel's batch path, compiled as a function of its own so that the
+/// compiler keeps its lanes in vector registers (inlined into a large loop, it stopped).
+#[inline(never)]
+fn evaluate_block<L: Law>(
+    law: &mut BoundLaw<'_, L>,
+    block: &PairBlock<L::Float, LANES>,
+    states: &mut [L::State; LANES],
+    out: &mut ContactBlock<L::Float, LANES>,
+) {
+    law.sphere_pairs(block, states, out);
 }

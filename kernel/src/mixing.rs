@@ -7,6 +7,8 @@
 //! material get that material's own values. A [`MaterialTable`](crate::MaterialTable) applies
 //! a rule to every pair and lets any pair be given its own law instead.
 
+use core::marker::PhantomData;
+
 use crate::backend::MathBackend;
 use crate::engine::Law;
 use crate::error::ParameterError;
@@ -74,20 +76,35 @@ pub struct LinearMaterial<F> {
 /// assert!((law.tangential().0.friction() - 0.6).abs() < 1e-12); // sqrt(0.4 * 0.9)
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct LinearMixing<F, T> {
+pub struct LinearMixing<F: Float, T, M = <F as Float>::DefaultBackend> {
     tangential: fn(TangentialParameters<F>) -> T,
+    backend: PhantomData<fn() -> M>,
 }
 
-impl<F, T> LinearMixing<F, T> {
+impl<F: Float, T> LinearMixing<F, T> {
     /// The rule, with the tangential law built by `tangential`.
     pub fn new(tangential: fn(TangentialParameters<F>) -> T) -> Self {
-        Self { tangential }
+        Self {
+            tangential,
+            backend: PhantomData,
+        }
     }
 }
 
-impl<F: Float, T: TangentialModel<F>> Mixing<F> for LinearMixing<F, T> {
+impl<F: Float, T, M> LinearMixing<F, T, M> {
+    /// The same rule, its laws computing with backend `B` (see
+    /// [`ContactLaw::with_backend`]).
+    pub fn with_backend<B: MathBackend<F>>(self) -> LinearMixing<F, T, B> {
+        LinearMixing {
+            tangential: self.tangential,
+            backend: PhantomData,
+        }
+    }
+}
+
+impl<F: Float, T: TangentialModel<F>, M: MathBackend<F>> Mixing<F> for LinearMixing<F, T, M> {
     type Properties = LinearMaterial<F>;
-    type Law = ContactLaw<F, LinearSpringDashpot<F>, T>;
+    type Law = ContactLaw<F, LinearSpringDashpot<F>, T, M>;
 
     fn law(
         &self,
@@ -101,7 +118,7 @@ impl<F: Float, T: TangentialModel<F>> Mixing<F> for LinearMixing<F, T> {
             mix(|m| m.dashpot_ratio),
             mix(|m| m.friction),
         )?;
-        Ok(ContactLaw::new(normal, (self.tangential)(tangential)))
+        Ok(ContactLaw::new(normal, (self.tangential)(tangential)).with_backend())
     }
 }
 
@@ -137,25 +154,39 @@ pub struct ElasticMaterial<F> {
 /// assert_eq!(law.normal().effective_modulus(), e_star);
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct HertzMixing<F, T> {
+pub struct HertzMixing<F: Float, T, M = <F as Float>::DefaultBackend> {
     largest: HertzImpact<F>,
     tangential: fn(MindlinParameters<F>) -> T,
+    backend: PhantomData<fn() -> M>,
 }
 
-impl<F, T> HertzMixing<F, T> {
+impl<F: Float, T> HertzMixing<F, T> {
     /// The rule, with every pair's Hertz law declared for impacts up to `largest` and the
     /// tangential law built by `tangential`.
     pub fn new(largest: HertzImpact<F>, tangential: fn(MindlinParameters<F>) -> T) -> Self {
         Self {
             largest,
             tangential,
+            backend: PhantomData,
         }
     }
 }
 
-impl<F: Float, T: TangentialModel<F>> Mixing<F> for HertzMixing<F, T> {
+impl<F: Float, T, M> HertzMixing<F, T, M> {
+    /// The same rule, its laws computing with backend `B` (see
+    /// [`ContactLaw::with_backend`]).
+    pub fn with_backend<B: MathBackend<F>>(self) -> HertzMixing<F, T, B> {
+        HertzMixing {
+            largest: self.largest,
+            tangential: self.tangential,
+            backend: PhantomData,
+        }
+    }
+}
+
+impl<F: Float, T: TangentialModel<F>, M: MathBackend<F>> Mixing<F> for HertzMixing<F, T, M> {
     type Properties = ElasticMaterial<F>;
-    type Law = ContactLaw<F, Hertz<F>, T>;
+    type Law = ContactLaw<F, Hertz<F>, T, M>;
 
     fn law(
         &self,
@@ -170,6 +201,6 @@ impl<F: Float, T: TangentialModel<F>> Mixing<F> for HertzMixing<F, T> {
             mix(|m| m.dashpot_ratio),
             mix(|m| m.friction),
         )?;
-        Ok(ContactLaw::new(normal, (self.tangential)(tangential)))
+        Ok(ContactLaw::new(normal, (self.tangential)(tangential)).with_backend())
     }
 }
