@@ -6,10 +6,10 @@ use host_tests::impact::floor;
 use host_tests::random::Xorshift;
 use proptest::prelude::*;
 use soft_sphere::{
-    ContactError, ContactLaw, ContactList, ContactRecord, ElasticMaterial, HertzImpact,
-    HertzMixing, Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray,
-    ListError, ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA,
-    Parameter, ParameterError, Route, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
+    Backup, ContactError, ContactLaw, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
+    Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray, ListError,
+    ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, Parameter,
+    ParameterError, Route, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
     effective_mass,
 };
 
@@ -233,6 +233,9 @@ fn bits<T: std::fmt::Debug>(value: &T) -> String {
     format!("{value:?}")
 }
 
+/// One step's forces, torques and contact outcomes.
+type Step = (Vec<Vec3<f64>>, Vec<Vec3<f64>>, Vec<Interaction<f64>>);
+
 /// The same step one contact at a time through the public one-contact path, forces added in
 /// list order.
 fn one_at_a_time(
@@ -241,7 +244,7 @@ fn one_at_a_time(
     walls: &[MaterialWall<f64>],
     dt: soft_sphere::TimeStep<f64>,
     (pair_states, wall_states): (&mut [State], &mut [State]),
-) -> Result<(Vec<Vec3<f64>>, Vec<Vec3<f64>>, Vec<Interaction<f64>>), ContactError> {
+) -> Result<Step, ContactError> {
     let n = m.position.len();
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let mut outcomes = Vec::new();
@@ -292,7 +295,9 @@ fn mixture_bits(route: Route) {
     let mut states = vec![State::default(); m.pairs.len()];
     let mut wall_states = vec![State::default(); n * walls.len()];
     let (mut ref_states, mut ref_wall_states) = (states.clone(), wall_states.clone());
-    let mut records = vec![ContactRecord::default(); m.pairs.len() + n * walls.len()];
+    let contacts = m.pairs.len() + n * walls.len();
+    let mut records = vec![Interaction::Apart; contacts];
+    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let (mut touching, mut mixed, mut sliding) = (0, 0, 0);
     for step in 0..200 {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
@@ -305,7 +310,11 @@ fn mixture_bits(route: Route) {
         let out = ListOutput {
             force: &mut force,
             torque: &mut torque,
-            records: &mut records,
+            backup: Backup {
+                states: &mut saved.0,
+                loads: &mut saved.1,
+            },
+            records: Some(&mut records),
         };
         let stats = t.evaluate_by(route, dt, &m.arrays(), list, out).unwrap();
         let (ref_force, ref_torque, outcomes) =
@@ -314,8 +323,7 @@ fn mixture_bits(route: Route) {
         assert_eq!(bits(&torque), bits(&ref_torque), "step {step}: torques");
         assert_eq!(bits(&states), bits(&ref_states), "step {step}: states");
         assert_eq!(bits(&wall_states), bits(&ref_wall_states), "step {step}");
-        let seen: Vec<_> = records.iter().map(|r| *r.interaction()).collect();
-        assert_eq!(bits(&seen), bits(&outcomes), "step {step}: records");
+        assert_eq!(bits(&records), bits(&outcomes), "step {step}: records");
         let pairs_touching = outcomes[..m.pairs.len()]
             .iter()
             .filter(|o| o.forces().is_some())
@@ -373,7 +381,9 @@ fn try_route(
     let mut force: Vec<_> = (0..n).map(|k| Vec3::new(k as f64, 1.0, 2.0)).collect();
     let mut torque = force.clone();
     let before = bits(&(&states, &wall_states, &force, &torque));
-    let mut records = vec![ContactRecord::default(); pairs.len() + n * walls.len()];
+    let contacts = pairs.len() + n * walls.len();
+    let mut records = vec![Interaction::Apart; contacts];
+    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let result = t.evaluate_by(
         route,
         dt,
@@ -387,7 +397,11 @@ fn try_route(
         ListOutput {
             force: &mut force,
             torque: &mut torque,
-            records: &mut records,
+            backup: Backup {
+                states: &mut saved.0,
+                loads: &mut saved.1,
+            },
+            records: Some(&mut records),
         },
     );
     if result.is_err() {
@@ -461,10 +475,15 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     let mut states = vec![State::default(); m.pairs.len()];
     let mut wall_states = vec![State::default(); n];
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-    let mut records = vec![ContactRecord::default(); m.pairs.len() + n];
+    let mut records = vec![Interaction::Apart; m.pairs.len() + n];
+    let mut saved = (
+        records.iter().map(|_| State::default()).collect::<Vec<_>>(),
+        vec![Vec3::ZERO; 2 * n],
+    );
     let mut run = |cut: usize| {
         let (p, w) = (states.len(), wall_states.len());
         let (f, r) = (force.len(), records.len());
+        let (bs, bl) = (saved.0.len(), saved.1.len());
         t.evaluate(
             dt,
             &m.arrays(),
@@ -477,7 +496,11 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             ListOutput {
                 force: &mut force[..f - usize::from(cut == 2)],
                 torque: &mut torque[..f - usize::from(cut == 3)],
-                records: &mut records[..r - usize::from(cut == 4)],
+                records: Some(&mut records[..r - usize::from(cut == 4)]),
+                backup: Backup {
+                    states: &mut saved.0[..bs - usize::from(cut == 5)],
+                    loads: &mut saved.1[..bl - usize::from(cut == 6)],
+                },
             },
         )
     };
@@ -487,11 +510,13 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         ListArray::Force,
         ListArray::Torque,
         ListArray::Records,
+        ListArray::BackupStates,
+        ListArray::BackupLoads,
     ];
     for (cut, array) in expected.into_iter().enumerate() {
         assert_eq!(run(cut), Err(ListError::Length(array)));
     }
-    assert!(run(5).is_ok());
+    assert!(run(7).is_ok());
     // A material past the table, a sphere's or a wall's.
     let mut material = m.material.clone();
     material[7] = 3;
@@ -777,7 +802,7 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
         let dt = step.seconds();
         let pairs = [[0u32, 1], [1, 2]];
         let mut states = [Default::default(); 2];
-        let mut records = [ContactRecord::default(); 2];
+        let mut saved = ([Default::default(); 2], [Vec3::ZERO; 6]);
         let mut touched = 0;
         for _ in 0..200_000 {
             let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
@@ -801,7 +826,11 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
                 ListOutput {
                     force: &mut force,
                     torque: &mut torque,
-                    records: &mut records,
+                    backup: Backup {
+                        states: &mut saved.0,
+                        loads: &mut saved.1,
+                    },
+                    records: None,
                 },
             )?;
             touched += stats.pair_contacts;
@@ -877,7 +906,8 @@ fn an_empty_list_and_walls_alone_work() {
     let dt = t.time_step(1.0e-6, &arrays, &walls).unwrap();
     let mut wall_states = [State::default()];
     let (mut force, mut torque) = ([Vec3::ZERO], [Vec3::ZERO]);
-    let mut records = [ContactRecord::default()];
+    let mut records = [Interaction::Apart];
+    let mut saved = ([State::default()], [Vec3::ZERO; 2]);
     let stats = t
         .evaluate(
             dt,
@@ -891,7 +921,11 @@ fn an_empty_list_and_walls_alone_work() {
             ListOutput {
                 force: &mut force,
                 torque: &mut torque,
-                records: &mut records,
+                backup: Backup {
+                    states: &mut saved.0,
+                    loads: &mut saved.1,
+                },
+                records: Some(&mut records),
             },
         )
         .unwrap();
@@ -903,6 +937,6 @@ fn an_empty_list_and_walls_alone_work() {
         "{:?}",
         force[0]
     );
-    assert!(matches!(records[0].interaction(), Interaction::Touching(_)));
+    assert!(matches!(records[0], Interaction::Touching(_)));
     let _ = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0));
 }

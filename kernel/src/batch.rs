@@ -284,18 +284,16 @@ impl Status {
     }
 
     /// What the one-contact path returns for this pair: its checks in the same order (sphere i,
-    /// sphere j, coincident centres, apart, a non-finite result, past the stable step), the
-    /// first failure winning. `stable` is true for a contact within the step's limit or one the
-    /// step tolerates.
+    /// sphere j, coincident centres, apart, a non-finite result), the first failure winning
+    /// (the stability check, last in that order, is made apart: see `sphere_pairs`).
     #[inline(always)]
     fn of_pair<F: Float>(
         i: &Sphere<F>,
         j: &Sphere<F>,
         separation: &Separation<F>,
-        (finite, stable): (bool, bool),
+        finite: bool,
     ) -> u8 {
-        let status = select(stable, Self::TOUCHING, Self::PAST_STABLE_STEP);
-        let status = select(finite, status, Self::NON_FINITE_RESULT);
+        let status = select(finite, Self::TOUCHING, Self::NON_FINITE_RESULT);
         let status = select(separation.apart(), Self::APART, status);
         let status = select(separation.coincident(), Self::COINCIDENT_CENTRES, status);
         Self::of_sphere(i, Self::of_sphere(j, status))
@@ -356,25 +354,49 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
     // Each lane derives its pair's oscillator: in vector registers that costs less than testing
     // whether the block's masses match the bound law's remembered pair (contact_batch_bench).
     let derive = |m: [F; 2]| law.normal().oscillator::<M>(effective_mass(m[0], m[1]));
-    let tolerate = time_step.tolerates_unstable_contacts();
-    let mut unstable = [false; N];
     for (lane, state) in kept.iter_mut().enumerate() {
         let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
         let separation = Separation::of(&i, &j);
         let frame = separation.frame::<M>(&i, &j, law.lever_arm());
         let oscillator = derive([i.mass, j.mass]);
-        let (forces, next, frequency) = law.touching(&frame, &oscillator, state, time_step);
+        let (forces, next, _) = law.touching(&frame, &oscillator, state, time_step);
         let finite = forces.is_finite() && next.is_finite();
-        let within = law.within_stable_step(frequency, time_step);
-        let status = Status::of_pair(&i, &j, &separation, (finite, within || tolerate));
+        let status = Status::of_pair(&i, &j, &separation, finite);
         let touching = status == Status::TOUCHING;
         let apart = status == Status::APART;
-        unstable[lane] = touching && !within;
         *state = select(touching, next, select(apart, Default::default(), *state));
         out.set(lane, &select(touching, forces, untouched), status);
     }
+    // The stability check, lane by lane after the widened loop (inside it, the compiler stopped
+    // widening the lanes). A touching lane's frequency is derived again from the same inputs by
+    // the same formulas as in `touching`, so the bits, and the verdict, are the one-contact
+    // path's.
+    let tolerate = time_step.tolerates_unstable_contacts();
+    let mut unstable = 0usize;
+    for (lane, state) in kept.iter_mut().enumerate() {
+        if out.status[lane] != Status::TOUCHING {
+            continue;
+        }
+        let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
+        let radius = i.radius * j.radius / (i.radius + j.radius);
+        let at_rest = law.normal().contact::<M>(
+            out.overlap[lane],
+            F::ZERO,
+            radius,
+            &derive([i.mass, j.mass]),
+        );
+        if law.within_stable_step(at_rest.oscillator.natural_frequency, time_step) {
+            continue;
+        }
+        if tolerate {
+            unstable += 1;
+        } else {
+            *state = states[lane];
+            out.set(lane, &untouched, Status::PAST_STABLE_STEP);
+        }
+    }
     *states = kept;
-    bound.count_unstable(unstable.iter().filter(|&&u| u).count());
+    bound.count_unstable(unstable);
 }
 
 impl<L: Law> BoundLaw<'_, L> {

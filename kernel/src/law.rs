@@ -72,7 +72,7 @@ type Slots<F, M, R> = PhantomData<fn() -> (F, M, R)>;
 
 /// The forces and torques of one touching contact. Forces act on body j; body i receives the
 /// negative (action and reaction). For a sphere-wall contact the sphere is body i.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ContactForces<F> {
     /// Unit normal from i to j (for a wall: from the sphere into the wall).
     pub normal: Vec3<F>,

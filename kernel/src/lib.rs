@@ -191,7 +191,7 @@ pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
 pub use list::{
-    ContactList, ContactRecord, ListArray, ListError, ListOutput, ListStats, MaterialWall, Route,
+    Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall, Route,
     SphereArrays,
 };
 pub use material::Material;

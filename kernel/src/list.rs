@@ -16,7 +16,7 @@ use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::Float;
 use crate::geometry::Separation;
-use crate::law::Interaction;
+use crate::law::{ContactForces, Interaction};
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
@@ -25,13 +25,15 @@ use crate::vector::Vec3;
 /// route.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Route {
-    /// Blocks where the law vectorises ([`Law::VECTORISES`]: its tangential slot computes every
-    /// lane without branching, and the build has 256-bit vectors), else one at a time.
+    /// The route that measured fastest (`list_bench`): today one at a time, in every build.
     #[default]
     Auto,
-    /// Sorted by pair of materials into blocks of [`LANES`] through the batch path.
+    /// Sorted by pair of materials into blocks of [`LANES`] through the batch path. The blocks
+    /// are evaluated in vector registers (with the `Std` backend in an AVX build), but gathering
+    /// them from the arrays, sorting and scattering cost more than that saves: 1.3 times slower
+    /// than one at a time in `list_bench` (`x86-64-v3`, 10,000 spheres).
     Blocks,
-    /// One pair at a time through the one-contact path.
+    /// One sifted pair at a time through the one-contact path.
     OneAtATime,
 }
 
@@ -101,48 +103,38 @@ pub struct ContactList<'a, F, S> {
 }
 
 /// Where an evaluation writes: the engine's force and torque arrays (one per sphere; the
-/// contacts' forces and torques are added to what they hold), and one record per contact.
+/// contacts' forces and torques are added to what they hold), the backup it puts everything
+/// back from when a contact is refused, and, when given, each contact's outcome.
 #[derive(Debug)]
 pub struct ListOutput<'a, F, S> {
     /// Force on each sphere (N), added to.
     pub force: &'a mut [Vec3<F>],
     /// Torque on each sphere (N m), added to.
     pub torque: &'a mut [Vec3<F>],
-    /// One record per contact: the pairs' first, then the walls' in the order of their states.
-    /// Read them for force chains; [`ListOutput::records_needed`] gives the length.
-    pub records: &'a mut [ContactRecord<F, S>],
+    /// Working memory: a copy of what the call changes, restored when it fails.
+    pub backup: Backup<'a, F, S>,
+    /// Each contact's outcome when given (for force chains): the pairs' first, then the
+    /// walls' in the order of their states ([`ListOutput::records_needed`] of them).
+    pub records: Option<&'a mut [Interaction<F>]>,
 }
 
 impl<F, S> ListOutput<'_, F, S> {
-    /// The length of [`ListOutput::records`] for `pairs` pairs and `spheres` spheres against
-    /// `walls` walls.
+    /// The length of [`ListOutput::records`] and of [`Backup::states`] for `pairs` pairs and
+    /// `spheres` spheres against `walls` walls.
     pub fn records_needed(pairs: usize, spheres: usize, walls: usize) -> usize {
         pairs + spheres * walls
     }
 }
 
-/// What one contact of the list gave in the last evaluation: its [`Interaction`] (forces,
-/// normal, overlap, sliding), and the state it goes on from.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactRecord<F, S> {
-    interaction: Interaction<F>,
-    state: S,
-}
-
-impl<F: Float, S: Default> Default for ContactRecord<F, S> {
-    fn default() -> Self {
-        Self {
-            interaction: Interaction::Apart,
-            state: S::default(),
-        }
-    }
-}
-
-impl<F, S> ContactRecord<F, S> {
-    /// The contact's outcome: [`Interaction::Touching`] with its forces, or apart.
-    pub fn interaction(&self) -> &Interaction<F> {
-        &self.interaction
-    }
+/// The working memory in which an evaluation keeps a copy of what it changes (every state,
+/// every force and torque), so that a refused contact leaves the caller's arrays exactly as
+/// they were. Its contents between calls mean nothing.
+#[derive(Debug)]
+pub struct Backup<'a, F, S> {
+    /// One per contact ([`ListOutput::records_needed`]).
+    pub states: &'a mut [S],
+    /// Two per sphere (its force and its torque).
+    pub loads: &'a mut [Vec3<F>],
 }
 
 /// Totals of one evaluation.
@@ -184,6 +176,10 @@ pub enum ListArray {
     Torque,
     /// [`ListOutput::records`] ([`ListOutput::records_needed`]).
     Records,
+    /// [`Backup::states`] ([`ListOutput::records_needed`]).
+    BackupStates,
+    /// [`Backup::loads`] (two per sphere).
+    BackupLoads,
 }
 
 /// Why a list evaluation or its time step was refused. Nothing the caller gave has changed.
@@ -404,13 +400,15 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     /// Each contact gives the same bits, state and outcome as
     /// [`ContactLaw::sphere_sphere`](crate::ContactLaw::sphere_sphere) or
     /// [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall) with its law. Every sphere is
-    /// checked once. When every contact succeeded, each state is advanced (reset where apart),
-    /// each touching contact's forces and torques are added into `out.force` and `out.torque`
-    /// in list order, and `out.records` holds every contact's outcome.
+    /// checked once. Each state is advanced (reset where apart), each touching contact's forces
+    /// and torques are added into `out.force` and `out.torque` in list order (so the sums are
+    /// the same bits by any route), and `out.records`, when given, receives every contact's
+    /// outcome. If any contact is refused, every state, force and torque is put back from
+    /// `out.backup` before the error is returned.
     ///
     /// ```
     /// use soft_sphere::{
-    ///     ContactList, LinearMaterial, LinearMixing, ListOutput, MaterialTable, ModelAA,
+    ///     Backup, ContactList, LinearMaterial, LinearMixing, ListOutput, MaterialTable, ModelAA,
     ///     SphereArrays, Vec3,
     /// };
     ///
@@ -435,8 +433,13 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     ///     pairs: &[[0, 1], [1, 2]], pair_states: &mut pair_states, walls: &[], wall_states: &mut [],
     /// };
     /// let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
-    /// let mut records = [Default::default(); 2];
-    /// let out = ListOutput { force: &mut force, torque: &mut torque, records: &mut records };
+    /// let (mut saved_states, mut saved_loads) = ([Default::default(); 2], [Vec3::ZERO; 6]);
+    /// let out = ListOutput {
+    ///     force: &mut force,
+    ///     torque: &mut torque,
+    ///     backup: Backup { states: &mut saved_states, loads: &mut saved_loads },
+    ///     records: None,
+    /// };
     /// let stats = table.evaluate(step, &spheres, list, out).unwrap();
     /// assert_eq!(stats.pair_contacts, 2);
     /// assert!(force[0].x < 0.0 && force[2].x > 0.0); // pushed apart by the steel sphere
@@ -445,7 +448,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     ///
     /// # Errors
     /// In this order, the first failure winning; nothing the caller gave is changed (states,
-    /// forces, torques; the records are then unspecified):
+    /// forces, torques; the records and the backup are then unspecified):
     /// [`ListError::Length`] for an array of the wrong length; [`ListError::Material`] /
     /// [`ListError::Sphere`] for the first bad sphere; [`ListError::WallMaterial`];
     /// [`ListError::PairIndex`] for the first pair past the arrays; [`ListError::Pair`] and
@@ -474,12 +477,14 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
         let blocks = match route {
-            Route::Auto => L::VECTORISES,
+            Route::Auto | Route::OneAtATime => false,
             Route::Blocks => true,
-            Route::OneAtATime => false,
         };
         let n = spheres.len();
         let (pairs, walls) = (list.pairs, list.walls);
+        let contacts =
+            ListOutput::<L::Float, L::State>::records_needed(pairs.len(), n, walls.len());
+        let records = out.records.as_ref().map_or(contacts, |r| r.len());
         let lengths = [
             (list.pair_states.len(), pairs.len(), ListArray::PairStates),
             (
@@ -489,11 +494,9 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             ),
             (out.force.len(), n, ListArray::Force),
             (out.torque.len(), n, ListArray::Torque),
-            (
-                out.records.len(),
-                ListOutput::<L::Float, L::State>::records_needed(pairs.len(), n, walls.len()),
-                ListArray::Records,
-            ),
+            (records, contacts, ListArray::Records),
+            (out.backup.states.len(), contacts, ListArray::BackupStates),
+            (out.backup.loads.len(), 2 * n, ListArray::BackupLoads),
         ];
         if let Some(&(_, _, array)) = lengths.iter().find(|(got, wanted, _)| got != wanted) {
             return Err(ListError::Length(array));
@@ -506,118 +509,91 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         {
             return Err(ListError::PairIndex { pair });
         }
-        let (pair_records, wall_records) = out.records.split_at_mut(pairs.len());
+        let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
+        saved_pairs.copy_from_slice(list.pair_states);
+        saved_walls.copy_from_slice(list.wall_states);
+        let (saved_force, saved_torque) = out.backup.loads.split_at_mut(n);
+        saved_force.copy_from_slice(out.force);
+        saved_torque.copy_from_slice(out.torque);
+        let mut sink = Sink {
+            force: out.force,
+            torque: out.torque,
+            records: out.records,
+            stats: ListStats::default(),
+        };
         let laws = self.rows();
         let mut bound: [[BoundLaw<'_, L>; M]; M] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
-        // The checks above made every sphere valid: no sphere is checked again.
-        let sphere = |k: usize| CheckedSphere::trusted(spheres.sphere(k));
-        let material = |k: usize| spheres.material[k] as usize;
-        let mut staged = Staged::new();
-        for (c, chunk) in pairs.chunks(SIFT).enumerate() {
-            let first = c * SIFT;
-            let states = &list.pair_states[first..first + chunk.len()];
-            let records = &mut pair_records[first..first + chunk.len()];
-            let failed = if blocks {
-                staged.in_blocks(spheres, chunk, states, records, &mut bound)
-            } else {
-                let mut failed = None;
-                for k in sift(spheres, chunk, records, &mut staged.touching) {
-                    let [i, j] = chunk[k].map(|x| x as usize);
-                    let mut next = states[k];
-                    let law = &mut bound[material(i)][material(j)];
-                    match law.sphere_sphere(&sphere(i), &sphere(j), &mut next) {
-                        Ok(interaction) => {
-                            records[k] = ContactRecord {
-                                interaction,
-                                state: next,
-                            }
-                        }
-                        Err(error) => {
-                            failed = Some((k, error));
-                            break;
-                        }
-                    }
-                }
-                failed
-            };
-            if let Some((k, error)) = failed {
-                return Err(ListError::Pair {
-                    pair: first + k,
-                    error,
-                });
-            }
+        let outcome = evaluate_pairs(
+            spheres,
+            (pairs, &mut *list.pair_states),
+            &mut bound,
+            &mut sink,
+            blocks,
+        )
+        .and_then(|()| {
+            evaluate_walls(
+                spheres,
+                (walls, &mut *list.wall_states),
+                &mut bound,
+                &mut sink,
+                pairs.len(),
+            )
+        });
+        if let Err(error) = outcome {
+            list.pair_states.copy_from_slice(saved_pairs);
+            list.wall_states.copy_from_slice(saved_walls);
+            sink.force.copy_from_slice(saved_force);
+            sink.torque.copy_from_slice(saved_torque);
+            return Err(error);
         }
-        if !walls.is_empty() {
-            for (k, (states, records)) in list
-                .wall_states
-                .chunks(walls.len())
-                .zip(wall_records.chunks_mut(walls.len()))
-                .enumerate()
-            {
-                let body = sphere(k);
-                for (w, ((wall, state), record)) in
-                    walls.iter().zip(states).zip(records).enumerate()
-                {
-                    let mut next = *state;
-                    let law = &mut bound[material(k)][wall.material as usize];
-                    let interaction =
-                        law.sphere_wall(&body, &wall.wall, &mut next)
-                            .map_err(|error| ListError::Wall {
-                                sphere: k,
-                                wall: w,
-                                error,
-                            })?;
-                    *record = ContactRecord {
-                        interaction,
-                        state: next,
-                    };
-                }
-            }
-        }
-        let mut stats = ListStats {
-            unstable_contacts: bound
-                .iter()
-                .flatten()
-                .map(BoundLaw::unstable_contacts)
-                .sum(),
-            ..ListStats::default()
-        };
-        // Every contact succeeded: commit, in list order.
-        for ((&[i, j], state), record) in pairs
+        sink.stats.unstable_contacts = bound
             .iter()
-            .zip(list.pair_states.iter_mut())
-            .zip(pair_records.iter())
-        {
-            *state = record.state;
-            if let Interaction::Touching(c) = &record.interaction {
-                let (i, j) = (i as usize, j as usize);
-                let on_j = c.force_on_j();
-                out.force[i] -= on_j;
-                out.torque[i] += c.torque_on_i;
-                out.force[j] += on_j;
-                out.torque[j] += c.torque_on_j;
-                stats.pair_contacts += 1;
-                stats.sliding_contacts += usize::from(c.sliding);
-                stats.overlap_sum += c.overlap;
-            }
+            .flatten()
+            .map(BoundLaw::unstable_contacts)
+            .sum();
+        Ok(sink.stats)
+    }
+}
+
+/// Where the contacts' outcomes go, in list order.
+struct Sink<'o, F> {
+    force: &'o mut [Vec3<F>],
+    torque: &'o mut [Vec3<F>],
+    records: Option<&'o mut [Interaction<F>]>,
+    stats: ListStats<F>,
+}
+
+impl<F: Float> Sink<'_, F> {
+    /// Pair `[i, j]`, the `k`-th contact of the list, touching with `c`.
+    #[inline(always)]
+    fn pair(&mut self, k: usize, [i, j]: [usize; 2], c: &ContactForces<F>) {
+        let on_j = c.force_on_j();
+        self.force[i] -= on_j;
+        self.torque[i] += c.torque_on_i;
+        self.force[j] += on_j;
+        self.torque[j] += c.torque_on_j;
+        self.stats.pair_contacts += 1;
+        self.stats.sliding_contacts += usize::from(c.sliding);
+        self.stats.overlap_sum += c.overlap;
+        self.record(k, Interaction::Touching(*c));
+    }
+
+    /// Sphere `sphere`, the `k`-th contact of the list, touching a wall with `c`.
+    #[inline(always)]
+    fn wall(&mut self, k: usize, sphere: usize, c: &ContactForces<F>) {
+        self.force[sphere] += c.force_on_i();
+        self.torque[sphere] += c.torque_on_i;
+        self.stats.wall_contacts += 1;
+        self.stats.sliding_contacts += usize::from(c.sliding);
+        self.record(k, Interaction::Touching(*c));
+    }
+
+    #[inline(always)]
+    fn record(&mut self, k: usize, interaction: Interaction<F>) {
+        if let Some(records) = self.records.as_deref_mut() {
+            records[k] = interaction;
         }
-        for (k, (state, record)) in list
-            .wall_states
-            .iter_mut()
-            .zip(wall_records.iter())
-            .enumerate()
-        {
-            *state = record.state;
-            if let Interaction::Touching(c) = &record.interaction {
-                let sphere = k / walls.len();
-                out.force[sphere] += c.force_on_i();
-                out.torque[sphere] += c.torque_on_i;
-                stats.wall_contacts += 1;
-                stats.sliding_contacts += usize::from(c.sliding);
-            }
-        }
-        Ok(stats)
     }
 }
 
@@ -628,39 +604,89 @@ const SIFT: usize = 256;
 /// straight after its lanes were stored one by one waits on every load).
 const GROUP: usize = 8;
 
-/// The places in `chunk` of the pairs the one-contact path would evaluate (overlapping or
-/// coincident), into `touching`; every other pair's record is set to apart with a reset state,
-/// as that path answers. Sifting first keeps the coin toss of touching or not out of the
-/// contact evaluation's branches.
-#[inline(always)]
-fn sift<'t, F: Float, S: Default>(
-    spheres: &SphereArrays<'_, F>,
-    chunk: &[[u32; 2]],
-    records: &mut [ContactRecord<F, S>],
-    touching: &'t mut [u16; SIFT],
-) -> impl Iterator<Item = usize> + 't {
-    let mut found = 0;
-    for (k, (&[i, j], record)) in chunk.iter().zip(records.iter_mut()).enumerate() {
-        let (i, j) = (i as usize, j as usize);
-        let separation = Separation::between(
-            (spheres.position[i], spheres.radius[i]),
-            (spheres.position[j], spheres.radius[j]),
-        );
-        *record = ContactRecord::default();
-        touching[found] = k as u16;
-        found += usize::from(separation.needs_evaluation());
+/// Every pair, chunk by chunk: sifted, evaluated (in blocks or one at a time), and committed in
+/// list order. Stops at the first chunk with a refused pair, naming the first in list order.
+fn evaluate_pairs<L: Law, const M: usize>(
+    spheres: &SphereArrays<'_, L::Float>,
+    (pairs, states): (&[[u32; 2]], &mut [L::State]),
+    bound: &mut [[BoundLaw<'_, L>; M]; M],
+    sink: &mut Sink<'_, L::Float>,
+    blocks: bool,
+) -> Result<(), ListError> {
+    let mut staged = Staged::<L::Float, L::State>::new();
+    for (c, (chunk, states)) in pairs.chunks(SIFT).zip(states.chunks_mut(SIFT)).enumerate() {
+        let first = c * SIFT;
+        let found = staged.sift(spheres, chunk, states);
+        let failed = if blocks {
+            staged.in_blocks(spheres, chunk, states, found, bound)
+        } else {
+            staged.one_at_a_time(spheres, chunk, states, found, bound)
+        };
+        if let Some((k, error)) = failed {
+            return Err(ListError::Pair {
+                pair: first + k,
+                error,
+            });
+        }
+        if sink.records.is_some() {
+            for k in 0..chunk.len() {
+                sink.record(first + k, Interaction::Apart);
+            }
+        }
+        for &k in &staged.touching[..found] {
+            let k = usize::from(k);
+            if staged.touches[k] {
+                let pair = chunk[k].map(|x| x as usize);
+                sink.pair(first + k, pair, &staged.forces[k]);
+            }
+        }
     }
-    touching[..found].iter().map(|&k| usize::from(k))
+    Ok(())
 }
 
-/// The working memory of the block route: sifted places, sorted by pair of materials, and a
-/// group of gathered blocks.
+/// Every sphere against every wall, one at a time, committed as they go.
+fn evaluate_walls<L: Law, const M: usize>(
+    spheres: &SphereArrays<'_, L::Float>,
+    (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
+    bound: &mut [[BoundLaw<'_, L>; M]; M],
+    sink: &mut Sink<'_, L::Float>,
+    first: usize,
+) -> Result<(), ListError> {
+    if walls.is_empty() {
+        return Ok(());
+    }
+    for (k, states) in states.chunks_mut(walls.len()).enumerate() {
+        let body = CheckedSphere::trusted(spheres.sphere(k));
+        let material = spheres.material[k] as usize;
+        for (w, (wall, state)) in walls.iter().zip(states).enumerate() {
+            let law = &mut bound[material][wall.material as usize];
+            let place = first + k * walls.len() + w;
+            match law.sphere_wall(&body, &wall.wall, state) {
+                Ok(Interaction::Touching(c)) => sink.wall(place, k, &c),
+                Ok(Interaction::Apart) => sink.record(place, Interaction::Apart),
+                Err(error) => {
+                    return Err(ListError::Wall {
+                        sphere: k,
+                        wall: w,
+                        error,
+                    });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The working memory of one chunk: the sifted places (in list order), the same sorted by pair
+/// of materials, a group of gathered blocks, and each place's forces and whether it touches.
 struct Staged<F: Float, S> {
     touching: [u16; SIFT],
     sorted: [u16; SIFT],
+    forces: [ContactForces<F>; SIFT],
+    touches: [bool; SIFT],
     blocks: [PairBlock<F, LANES>; GROUP],
     states: [[S; LANES]; GROUP],
-    out: ContactBlock<F, LANES>,
+    out: [ContactBlock<F, LANES>; GROUP],
 }
 
 impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
@@ -668,23 +694,82 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         Self {
             touching: [0; SIFT],
             sorted: [0; SIFT],
+            forces: [ContactForces::default(); SIFT],
+            touches: [false; SIFT],
             blocks: [PairBlock::default(); GROUP],
             states: [[S::default(); LANES]; GROUP],
-            out: ContactBlock::default(),
+            out: [ContactBlock::default(); GROUP],
         }
     }
 
-    /// One chunk through the batch path: sifted, sorted by pair of materials (a block holds
-    /// one law), gathered in groups of blocks straight from the arrays, evaluated, and each
-    /// touching pair's outcome and next state written to its record. Returns the first failed
-    /// pair in list order (its place in the chunk) and its error.
+    /// The places in `chunk` of the pairs the one-contact path evaluates (overlapping or
+    /// coincident), kept in `touching`; every other pair's state is reset, as that path does
+    /// for pairs apart. Returns how many. Sifting first keeps the coin toss of touching or not
+    /// out of the contact evaluation's branches.
+    #[inline(always)]
+    fn sift(
+        &mut self,
+        spheres: &SphereArrays<'_, F>,
+        chunk: &[[u32; 2]],
+        states: &mut [S],
+    ) -> usize {
+        let mut found = 0;
+        for (k, (&[i, j], state)) in chunk.iter().zip(states.iter_mut()).enumerate() {
+            let (i, j) = (i as usize, j as usize);
+            let separation = Separation::between(
+                (spheres.position[i], spheres.radius[i]),
+                (spheres.position[j], spheres.radius[j]),
+            );
+            let evaluate = separation.needs_evaluation();
+            if size_of::<S>() > 0 && !evaluate {
+                *state = S::default();
+            }
+            self.touching[found] = k as u16;
+            found += usize::from(evaluate);
+        }
+        found
+    }
+
+    /// The sifted pairs one at a time through the one-contact path; returns the first refused.
+    #[inline(always)]
+    fn one_at_a_time<L: Law<Float = F, State = S>, const M: usize>(
+        &mut self,
+        spheres: &SphereArrays<'_, F>,
+        chunk: &[[u32; 2]],
+        states: &mut [S],
+        found: usize,
+        bound: &mut [[BoundLaw<'_, L>; M]; M],
+    ) -> Option<(usize, ContactError)> {
+        for &k in &self.touching[..found] {
+            let k = usize::from(k);
+            let [i, j] = chunk[k].map(|x| x as usize);
+            let law = &mut bound[spheres.material[i] as usize][spheres.material[j] as usize];
+            let (a, b) = (
+                CheckedSphere::trusted(spheres.sphere(i)),
+                CheckedSphere::trusted(spheres.sphere(j)),
+            );
+            match law.sphere_sphere(&a, &b, &mut states[k]) {
+                Ok(Interaction::Touching(forces)) => {
+                    self.forces[k] = forces;
+                    self.touches[k] = true;
+                }
+                Ok(Interaction::Apart) => self.touches[k] = false,
+                Err(error) => return Some((k, error)),
+            }
+        }
+        None
+    }
+
+    /// The sifted pairs through the batch path: sorted by pair of materials (a block holds one
+    /// law), gathered in groups of blocks straight from the arrays, evaluated, and each pair's
+    /// forces and state kept. Returns the first refused pair in list order.
     #[inline(always)]
     fn in_blocks<L: Law<Float = F, State = S>, const M: usize>(
         &mut self,
         spheres: &SphereArrays<'_, F>,
         chunk: &[[u32; 2]],
-        states: &[S],
-        records: &mut [ContactRecord<F, S>],
+        states: &mut [S],
+        found: usize,
         bound: &mut [[BoundLaw<'_, L>; M]; M],
     ) -> Option<(usize, ContactError)> {
         let material = |k: usize| spheres.material[k] as usize;
@@ -694,11 +779,9 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         };
         // A counting sort by pair of materials, stable, so each pair's run keeps list order.
         let mut counts = [[0usize; M]; M];
-        let mut found = 0;
-        for k in sift(spheres, chunk, records, &mut self.touching) {
-            let (a, b) = key(k);
+        for &k in &self.touching[..found] {
+            let (a, b) = key(usize::from(k));
             counts[a][b] += 1;
-            found += 1;
         }
         let mut starts = [[0usize; M]; M];
         let mut next = 0;
@@ -719,33 +802,36 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             for (b, &count) in row.iter().enumerate() {
                 let run = &self.sorted[starts[a][b]..starts[a][b] + count];
                 for group in run.chunks(LANES * GROUP) {
-                    let blocks = group.chunks(LANES);
+                    let lanes = group.chunks(LANES);
                     for ((lanes, block), block_states) in
-                        blocks.clone().zip(&mut self.blocks).zip(&mut self.states)
+                        lanes.clone().zip(&mut self.blocks).zip(&mut self.states)
                     {
-                        for lane in 0..LANES {
+                        for (lane, state) in block_states.iter_mut().enumerate() {
                             match lanes.get(lane) {
                                 Some(&k) => {
                                     let [i, j] = chunk[usize::from(k)].map(|x| x as usize);
                                     block.set(lane, &spheres.sphere(i), &spheres.sphere(j));
-                                    block_states[lane] = states[usize::from(k)];
+                                    *state = states[usize::from(k)];
                                 }
                                 // An unused lane: spheres of no size, refused and ignored.
                                 None => block.set(lane, &Sphere::default(), &Sphere::default()),
                             }
                         }
                     }
-                    for ((lanes, block), block_states) in
-                        blocks.zip(&self.blocks).zip(&mut self.states)
+                    for (((lanes, block_states), out), block) in lanes
+                        .zip(&mut self.states)
+                        .zip(&mut self.out)
+                        .zip(&self.blocks)
                     {
-                        evaluate_block(&mut bound[a][b], block, block_states, &mut self.out);
+                        evaluate_block(&mut bound[a][b], block, block_states, out);
                         for (lane, &k) in lanes.iter().enumerate() {
                             let k = usize::from(k);
-                            match self.out.outcome(lane) {
+                            match out.outcome(lane) {
                                 Ok(interaction) => {
-                                    records[k] = ContactRecord {
-                                        interaction,
-                                        state: block_states[lane],
+                                    states[k] = block_states[lane];
+                                    self.touches[k] = interaction.forces().is_some();
+                                    if let Interaction::Touching(forces) = interaction {
+                                        self.forces[k] = forces;
                                     }
                                 }
                                 Err(error) => {
@@ -763,8 +849,8 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     }
 }
 
-/// One block through the kernel's batch path, compiled as a function of its own so that the
-/// compiler keeps its lanes in vector registers (inlined into a large loop, it stopped).
+/// One block through the kernel's batch path, in a function of its own: there the compiler
+/// keeps the lanes in vector registers (inlined into the large chunk loop, it did not).
 #[inline(never)]
 fn evaluate_block<L: Law>(
     law: &mut BoundLaw<'_, L>,
