@@ -1251,3 +1251,85 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
         .collect();
     assert_eq!(motion_bits(&checked), motion_bits(&direct));
 }
+
+/// The scene's steps go through the kernel's per-contact stability check: a wall law stiffer
+/// than the step was checked for, and a step checked against a sphere's mass instead of the
+/// pair's, stop the scene with `PastStableStep` at the first such contact (tolerated, the same
+/// scene gains energy: spheres rise above where they fell from).
+#[test]
+fn contacts_stiffer_than_the_step_stop_the_scene() {
+    let pair_law = law();
+    let wall_law = ContactLaw::new(
+        LinearSpringDashpot::new(1.0e6, 0.9).unwrap(),
+        ModelAA(TangentialParameters::new(2.857e5, 0.5, 0.5).unwrap()),
+    );
+    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    let gravity = Vec3::new(0.0, 0.0, -9.81);
+    let (spheres, domain) = gas(60, 5);
+    let m = Sphere::solid(Vec3::ZERO, DIAMETER / 2.0, 2500.0).mass;
+    let checked_for_pairs = pair_law
+        .time_step(0.5 * pair_law.critical_time_step(m / 2.0), m / 2.0)
+        .unwrap();
+    // Kinetic plus gravitational energy.
+    let energy = |scene: &OwnedScene<Law, [Wall<f64>; 1]>| {
+        let height: f64 = scene
+            .spheres
+            .iter()
+            .map(|s| s.mass * 9.81 * s.position.z)
+            .sum();
+        scene.kinetic_energy() + height
+    };
+    for tolerate in [false, true] {
+        let time_step = if tolerate {
+            checked_for_pairs.tolerating_unstable_contacts()
+        } else {
+            checked_for_pairs
+        };
+        let input = StepInput {
+            law: &pair_law,
+            wall_law: &wall_law,
+            gravity,
+            time_step,
+            integrator: Integrator::SymplecticEuler,
+        };
+        let mut scene =
+            OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+        let start = energy(&scene);
+        let mut walls_touched = 0;
+        let outcome = scene.run(&input, 20_000, |_, stats| {
+            walls_touched += stats.wall_contacts
+        });
+        if tolerate {
+            // Evaluated, the floor's unstable contacts create energy.
+            assert!(walls_touched > 0);
+            let end = energy(&scene);
+            assert!(
+                outcome.is_err() || end > 2.0 * start,
+                "{outcome:?}: {start} J -> {end} J"
+            );
+        } else {
+            assert_eq!(
+                outcome,
+                Err(StepError::Contact(ContactError::PastStableStep))
+            );
+            assert_eq!(walls_touched, 0, "refused at the first floor contact");
+            assert!(energy(&scene) < start * (1.0 + 1e-6), "no energy appeared");
+        }
+    }
+    // A step checked against one sphere's mass, for pairs of two: refused at the first
+    // touching pair (the gas has overlapping neighbours from its first step).
+    let input = StepInput {
+        law: &pair_law,
+        wall_law: &pair_law,
+        gravity,
+        time_step: pair_law
+            .time_step(0.99 * pair_law.critical_time_step(m), m)
+            .unwrap(),
+        integrator: Integrator::SymplecticEuler,
+    };
+    let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+    assert_eq!(
+        scene.run(&input, 2_000, |_, _| {}),
+        Err(StepError::Contact(ContactError::PastStableStep))
+    );
+}

@@ -194,6 +194,22 @@ fn a_step_checked_against_a_heavier_mass_is_refused() {
 }
 
 #[test]
+fn the_stable_phase_of_a_linear_oscillator_is_its_closed_form() {
+    // 2 (sqrt(1 + z^2) - z): 2 undamped, smaller with damping (docs/physics.md, section 4).
+    let spring = ContactLaw::new(
+        soft_sphere::LinearSpring::new(1.0e3_f64).unwrap(),
+        Frictionless,
+    );
+    assert!((spring.stable_phase() - 2.0).abs() < 1e-15);
+    for e in [0.1_f64, 0.5, 0.9] {
+        let law = ContactLaw::new(LinearSpringDashpot::new(1.0e3, e).unwrap(), Frictionless);
+        let z = e.ln().abs() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
+        let closed = 2.0 * ((1.0 + z * z).sqrt() - z);
+        assert!((law.stable_phase() / closed - 1.0).abs() < 1e-14, "e = {e}");
+    }
+}
+
+#[test]
 fn the_stable_phase_is_the_critical_step_times_the_frequency_at_every_mass() {
     // The per-contact check and ContactLaw::time_step agree: a contact of effective mass m is
     // within the limit exactly when the step is below critical_time_step(m).
