@@ -1,10 +1,11 @@
 //! # soft-sphere
 //!
-//! Linear soft-sphere contact laws for discrete-element (DEM) simulation: a normal spring and
-//! dashpot, a tangential spring and dashpot, and a Coulomb slider, in the implementations compared
-//! by Elghannay & Tafti (NETL 2017): the stateless simplified law, Model AA (stored spring with a
-//! limited displacement), and Models A, B and C, kept so their failures can be shown. The
-//! formulas, conventions and validation cases are in `docs/physics.md`.
+//! Soft-sphere contact laws for discrete-element (DEM) simulation: a normal spring and dashpot
+//! (linear, or Hertz's), a tangential spring and dashpot (linear, or Mindlin's), a Coulomb slider
+//! and rolling resistance, in the implementations compared by Elghannay & Tafti (NETL 2017): the
+//! stateless simplified law, Model AA (stored spring with a limited displacement), and Models A, B
+//! and C, kept so their failures can be shown. The formulas, conventions and validation cases are
+//! in `docs/physics.md`.
 //!
 //! `#![no_std]`, no allocation, no `unsafe`; `f32` and `f64`; sphere-sphere and sphere-wall.
 //!
@@ -108,6 +109,17 @@
 //!   normal and tangential modes' explicit-integration limits, `dt < (2/w)(sqrt(1 + z^2) - z)`;
 //!   just below it a resting contact stays bounded, just above it it diverges; past it on purpose,
 //!   nothing non-finite leaves the kernel. (`stability.rs`, `stress.rs`)
+//! - **No contact past its step goes on silently.** Every evaluation checks its contact against
+//!   the step's limit ([`ContactLaw::stable_phase`]): a pair lighter than the declared mass, a
+//!   [`Hertz`] overlap past the declared impact's, a wall law stiffer than the step's are refused
+//!   with [`ContactError::PastStableStep`], or counted when the step
+//!   [tolerates](TimeStep::tolerating_unstable_contacts) them. (`unstable_contacts.rs`,
+//!   `batch.rs`, `scene.rs`)
+//! - **Whole lists are one contact at a time.** [`MaterialTable::evaluate`] gives each contact
+//!   of a list the one-contact bits with its pair of materials' law, adds the forces in list
+//!   order, and on an error puts every state and force back and names the sphere, pair or wall;
+//!   [`MaterialTable::time_step`] checks the step against every pair of materials present.
+//!   (`material_list.rs`)
 //! - **Rest.** A sphere resting on a plate for 10^6 steps does not drift or gain energy; a stored
 //!   spring holds a sphere on an incline below the friction angle, the stateless law lets it creep
 //!   (1 mm/s at 20 degrees, `mu` = 0.5). (`stress.rs`)
@@ -136,6 +148,11 @@
 //! per-contact state (`L::Float`, `L::State`). The scene crate (`examples/scene`), the C ABI and
 //! the examples reach the laws only through this public API; `docs/architecture.md` says where
 //! everything lives.
+//!
+//! A whole problem at once: a [`MaterialTable`] holds one law per pair of materials (mixed from
+//! each material's properties by a [`Mixing`] rule, any pair overridable), and
+//! [`MaterialTable::evaluate`] takes an engine's own arrays ([`SphereArrays`]), its pair list and
+//! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
 //!
 //! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `N` pairs given as
 //! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers. It pays

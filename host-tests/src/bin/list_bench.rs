@@ -312,12 +312,80 @@ fn main() -> Result<(), Box<dyn Error>> {
                 ns * per_contact
             );
         }
-        ratios.push((name, single / seam_blocks, seam_blocks * per_contact));
+        ratios.push((name, single / seam_one, seam_one * per_contact));
+        if name == "one" {
+            phases(
+                vector,
+                &packing,
+                material,
+                (time_step, repeat, rounds),
+                touching,
+            );
+        }
     }
     for (name, ratio, ns) in ratios {
         println!(
-            "list seam (blocks) over the caller's loop: {ratio:.2}x, {ns:.1} ns per touching contact ({name} material(s))"
+            "list seam over the caller's loop: {ratio:.2}x, {ns:.1} ns per touching contact ({name} material(s))"
         );
     }
     Ok(())
+}
+
+/// Where the seam's time goes, per touching contact (one material): the checks of every sphere
+/// (`time_step` makes them alone), the whole call on the same list with the packing spread so
+/// that nothing touches (checks, backup, sift, resets), and the whole call; the differences are
+/// the phases.
+fn phases(
+    table: &MaterialTable<Vectorised, 2>,
+    packing: &Packing,
+    material: &[u32],
+    (time_step, repeat, rounds): (TimeStep<f64>, usize, usize),
+    touching: usize,
+) {
+    let n = packing.position.len();
+    let arrays = packing.arrays(material);
+    let spread: Vec<_> = packing.position.iter().map(|&p| p * 2.0).collect();
+    let apart = SphereArrays {
+        position: &spread,
+        ..packing.arrays(material)
+    };
+    let pairs = &packing.pairs;
+    let mut seam = Seam {
+        route: Route::OneAtATime,
+        states: vec![SpringDisplacement::default(); pairs.len()],
+        saved_states: vec![SpringDisplacement::default(); pairs.len()],
+        saved_loads: vec![Vec3::ZERO; 2 * n],
+    };
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut times = [Vec::new(), Vec::new(), Vec::new()];
+    let per_contact =
+        |start: Instant| start.elapsed().as_secs_f64() * 1e9 / (repeat * touching) as f64;
+    for _ in 0..rounds {
+        let start = Instant::now();
+        for _ in 0..repeat {
+            black_box(table.time_step(1.0e-6, &arrays, &[]).is_ok());
+        }
+        times[0].push(per_contact(start));
+        let start = Instant::now();
+        for _ in 0..repeat {
+            black_box(seam.step(table, time_step, &apart, pairs, (&mut force, &mut torque)));
+        }
+        times[1].push(per_contact(start));
+        let start = Instant::now();
+        for _ in 0..repeat {
+            black_box(seam.step(table, time_step, &arrays, pairs, (&mut force, &mut torque)));
+        }
+        times[2].push(per_contact(start));
+    }
+    let [checks, nothing_touching, whole] = times.map(median);
+    println!("where the seam's time goes, ns per touching contact (one material, one at a time):");
+    println!(
+        "| checking every sphere | backup, sift, resets | evaluating and adding the touching pairs | whole call |"
+    );
+    println!("|---|---|---|---|");
+    println!(
+        "| {checks:.1} | {:.1} | {:.1} | {whole:.1} |",
+        nothing_touching - checks,
+        whole - nothing_touching
+    );
 }
