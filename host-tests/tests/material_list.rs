@@ -619,22 +619,30 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         ),
         "{refused:?}"
     );
-    // A sphere sunk into the floor too deep for the step: the wall contact with its place.
+    // A floor stiffer than the step allows: glass spheres whose step is checked without the
+    // steel floor, one of them resting on it. The wall contact is refused with its place.
+    let glass_only = vec![0u32; m.position.len()];
     let mut position = m.position.clone();
-    position[13].z = -1.0;
+    position[13].z = 0.9 * m.radius[13];
     let arrays = SphereArrays {
         position: &position,
+        material: &glass_only,
         ..m.arrays()
     };
-    assert!(matches!(
+    let light = m.mass.iter().copied().fold(f64::INFINITY, f64::min);
+    let pair_limit = t.law(0, 0).unwrap().critical_time_step(light / 2.0);
+    let wall_limit = t.law(0, 2).unwrap().critical_time_step(m.mass[13]);
+    assert!(wall_limit < 0.8 * pair_limit);
+    let dt = t.time_step(0.9 * pair_limit, &arrays, &[]).unwrap();
+    assert!(t.time_step(0.9 * pair_limit, &arrays, &walls).is_err());
+    assert_eq!(
         try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
-        Ok(())
-            | Err(ListError::Wall {
-                sphere: 13,
-                wall: 0,
-                ..
-            })
-    ));
+        Err(ListError::Wall {
+            sphere: 13,
+            wall: 0,
+            error: ContactError::PastStableStep
+        })
+    );
 }
 
 #[test]
