@@ -948,3 +948,95 @@ fn an_empty_list_and_walls_alone_work() {
     assert!(matches!(records[0], Interaction::Touching(_)));
     let _ = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0));
 }
+
+#[test]
+fn every_list_and_table_error_says_where_and_why() {
+    let texts = [
+        (
+            ListError::Length(ListArray::Mass).to_string(),
+            vec!["Mass", "length"],
+        ),
+        (
+            ListError::Material {
+                sphere: 7,
+                material: 3,
+            }
+            .to_string(),
+            vec!["sphere 7", "material 3"],
+        ),
+        (
+            ListError::WallMaterial {
+                wall: 1,
+                material: 9,
+            }
+            .to_string(),
+            vec!["wall 1", "material 9"],
+        ),
+        (
+            ListError::Sphere {
+                sphere: 11,
+                error: ContactError::NonPositiveMass,
+            }
+            .to_string(),
+            vec!["sphere 11", "mass"],
+        ),
+        (
+            ListError::PairIndex { pair: 3 }.to_string(),
+            vec!["pair 3", "past"],
+        ),
+        (
+            ListError::Pair {
+                pair: 5,
+                error: ContactError::CoincidentCentres,
+            }
+            .to_string(),
+            vec!["pair 5", "coincide"],
+        ),
+        (
+            ListError::Wall {
+                sphere: 13,
+                wall: 0,
+                error: ContactError::PastStableStep,
+            }
+            .to_string(),
+            vec!["sphere 13", "wall 0", "stiffer"],
+        ),
+        (
+            ListError::TimeStep {
+                materials: [0, 2],
+                error: ParameterError::TimeStepUnstable {
+                    time_step: 1e-5,
+                    limit: 1e-6,
+                },
+            }
+            .to_string(),
+            vec!["materials 0 and 2", "stability limit"],
+        ),
+        (
+            TableError::MaterialOutOfRange { material: 4 }.to_string(),
+            vec!["material 4", "past"],
+        ),
+        (
+            TableError::Pair {
+                materials: [1, 2],
+                error: ParameterError::Negative(Parameter::Friction),
+            }
+            .to_string(),
+            vec!["materials 1 and 2", "Friction"],
+        ),
+        (
+            ContactError::PastStableStep.to_string(),
+            vec!["stiffer", "time step"],
+        ),
+    ];
+    for (text, words) in texts {
+        for word in words {
+            assert!(text.contains(word), "{text:?} lacks {word:?}");
+        }
+    }
+    // The arrays' own size questions.
+    let m = Mixture::new(4, 1);
+    assert_eq!((m.arrays().len(), m.arrays().is_empty()), (4, false));
+    let none = Mixture::new(0, 1);
+    assert_eq!((none.arrays().len(), none.arrays().is_empty()), (0, true));
+}
