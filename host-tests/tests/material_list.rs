@@ -289,7 +289,16 @@ fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
 fn mixture_bits(route: Route) {
     let t = table();
     let mut m = Mixture::new(60, 7);
-    let walls = [floor_of(2), floor_of(1)];
+    // A steel floor under the lowest layer and a rubber side wall through the first column:
+    // both touched from the first step.
+    let wall = |point: Vec3<f64>, normal: Vec3<f64>, material| MaterialWall {
+        wall: Wall::new(point, normal).unwrap(),
+        material,
+    };
+    let walls = [
+        wall(Vec3::new(0.0, 0.0, 1.0e-3), Vec3::new(0.0, 0.0, 1.0), 2),
+        wall(Vec3::new(-0.6e-3, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), 1),
+    ];
     let dt = t.time_step(2.0e-6, &m.arrays(), &walls).unwrap();
     let n = m.position.len();
     let mut states = vec![State::default(); m.pairs.len()];
@@ -299,6 +308,7 @@ fn mixture_bits(route: Route) {
     let mut records = vec![Interaction::Apart; contacts];
     let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let (mut touching, mut mixed, mut sliding) = (0, 0, 0);
+    let mut on_walls = 0;
     for step in 0..200 {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         let list = ContactList {
@@ -329,6 +339,29 @@ fn mixture_bits(route: Route) {
             .filter(|o| o.forces().is_some())
             .count();
         assert_eq!(stats.pair_contacts, pairs_touching);
+        // The totals are those of the outcomes: walls touching, contacts sliding, the pairs'
+        // overlaps summed in list order.
+        let touching_forces = |o: &&Interaction<f64>| o.forces().copied();
+        let wall_forces: Vec<_> = outcomes[m.pairs.len()..]
+            .iter()
+            .filter_map(|o| touching_forces(&o))
+            .collect();
+        assert_eq!(stats.wall_contacts, wall_forces.len());
+        on_walls += wall_forces.iter().filter(|c| c.sliding).count();
+        let all: Vec<_> = outcomes
+            .iter()
+            .filter_map(|o| touching_forces(&o))
+            .collect();
+        assert_eq!(
+            stats.sliding_contacts,
+            all.iter().filter(|c| c.sliding).count()
+        );
+        let overlaps = outcomes[..m.pairs.len()]
+            .iter()
+            .filter_map(|o| touching_forces(&o))
+            .fold(0.0, |sum, c| sum + c.overlap);
+        assert_eq!(stats.overlap_sum, overlaps);
+        assert_eq!(stats.unstable_contacts, 0);
         touching += stats.pair_contacts;
         sliding += stats.sliding_contacts;
         mixed += m
@@ -343,8 +376,8 @@ fn mixture_bits(route: Route) {
     }
     // The comparison covered what it claims: touching pairs of different materials, sliding.
     assert!(
-        touching > 1000 && mixed > 300 && sliding > 10,
-        "{touching} {mixed} {sliding}"
+        touching > 1000 && mixed > 300 && sliding > 10 && on_walls > 10,
+        "{touching} {mixed} {sliding} {on_walls}"
     );
 }
 
