@@ -620,8 +620,9 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     let mut pairs = long.pairs.clone();
     let by_material = |material: u32| (0..60u32).find(|&k| long.material[k as usize] == material);
     let (glass_sphere, steel_sphere) = (by_material(0).unwrap(), by_material(2).unwrap());
-    pairs[290] = [steel_sphere, steel_sphere];
-    pairs[270] = [glass_sphere, glass_sphere];
+    // The later pair is of the materials evaluated first (glass before steel).
+    pairs[290] = [glass_sphere, glass_sphere];
+    pairs[270] = [steel_sphere, steel_sphere];
     pairs[260] = [glass_sphere, 59];
     assert_eq!(
         try_evaluate(&t, &long.arrays(), &pairs, &walls, dt_long),
