@@ -188,15 +188,15 @@ fn stable_phase<F: Float, N: NormalModel<F>, T: TangentialModel<F>>(
     tangential: &T,
     rotates: bool,
 ) -> F {
-    let mass = F::ONE;
+    // A unit effective mass; the tangential mode's is 2/7 of it for rotating solid spheres.
     let tangential_mass = if rotates {
-        F::from_f64(2.0 / 7.0) * mass
+        F::from_f64(2.0 / 7.0)
     } else {
-        mass
+        F::ONE
     };
-    let design = normal.design_contact(mass);
+    let design = normal.design_contact(F::ONE);
     let step = normal
-        .critical_time_step(mass)
+        .critical_time_step(F::ONE)
         .min_of(tangential.critical_time_step(&design, tangential_mass));
     step * design.oscillator.natural_frequency
 }
