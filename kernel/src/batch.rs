@@ -19,7 +19,7 @@ use crate::error::ContactError;
 use crate::float::Float;
 use crate::geometry::Separation;
 use crate::law::{ContactForces, ContactLaw, Interaction};
-use crate::normal::NormalModel;
+use crate::normal::{NormalModel, NormalOscillator};
 use crate::rolling::RollingModel;
 use crate::rotation::Rotation;
 use crate::tangential::{ContactState, TangentialModel};
@@ -285,7 +285,8 @@ impl Status {
 
     /// What the one-contact path returns for this pair: its checks in the same order (sphere i,
     /// sphere j, coincident centres, apart, a non-finite result), the first failure winning
-    /// (the stability check, last in that order, is made apart: see `sphere_pairs`).
+    /// (the stability check, which that path makes just before finiteness, is made apart: see
+    /// `sphere_pairs`).
     #[inline(always)]
     fn of_pair<F: Float>(
         i: &Sphere<F>,
@@ -367,29 +368,30 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
         *state = select(touching, next, select(apart, Default::default(), *state));
         out.set(lane, &select(touching, forces, untouched), status);
     }
-    // The stability check, lane by lane after the widened loop (inside it, the compiler stopped
-    // widening the lanes). A touching lane's frequency is derived again from the same inputs by
-    // the same formulas as in `touching`, so the bits, and the verdict, are the one-contact
-    // path's.
+    // The stability check, lane by lane after the widened loop (one more compare inside it and
+    // the compiler stopped widening the lanes). The one-contact path checks it before
+    // finiteness, so touching and non-finite lanes are both asked; each lane's stiffness and
+    // effective mass are derived again from the same inputs by the same formulas, so the
+    // verdict is the one-contact path's.
     let tolerate = time_step.tolerates_unstable_contacts();
     let mut unstable = 0usize;
     for (lane, state) in kept.iter_mut().enumerate() {
-        if out.status[lane] != Status::TOUCHING {
+        let status = out.status[lane];
+        if status != Status::TOUCHING && status != Status::NON_FINITE_RESULT {
             continue;
         }
         let (i, j) = (pairs.i.get(lane), pairs.j.get(lane));
-        let radius = i.radius * j.radius / (i.radius + j.radius);
-        let at_rest = law.normal().contact::<M>(
-            out.overlap[lane],
-            F::ZERO,
-            radius,
-            &derive([i.mass, j.mass]),
-        );
-        if law.within_stable_step(at_rest.oscillator.natural_frequency, time_step) {
+        let frame = Separation::of(&i, &j).frame::<M>(&i, &j, law.lever_arm());
+        let unit = NormalOscillator::default();
+        let contact =
+            law.normal()
+                .contact::<M>(frame.overlap, F::ZERO, frame.effective_radius, &unit);
+        let stiffness = law.normal().tangent_stiffness(&contact);
+        if law.within_stable_step(stiffness, effective_mass(i.mass, j.mass), time_step) {
             continue;
         }
         if tolerate {
-            unstable += 1;
+            unstable += usize::from(status == Status::TOUCHING);
         } else {
             *state = states[lane];
             out.set(lane, &untouched, Status::PAST_STABLE_STEP);

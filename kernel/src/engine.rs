@@ -59,11 +59,10 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// [`SpringDisplacement`](crate::SpringDisplacement) for the stored-spring laws.
     type State: ContactState;
 
-    /// Whether [`BoundLaw::sphere_pairs`] is worth calling instead of one contact at a time: the
-    /// tangential slot vectorises ([`TangentialModel::VECTORISES`](crate::TangentialModel::VECTORISES))
-    /// and the build has 256-bit vectors (AVX, as in `-C target-cpu=x86-64-v3`). With SSE2 alone,
-    /// two `f64` lanes do not pay for computing every lane's whole path: the reference scene ran
-    /// slower in blocks there (README, "Batches"). Either way the bits are the same.
+    /// Whether [`BoundLaw::sphere_pairs`] is worth calling instead of one contact at a time.
+    /// False today for every law: with the per-contact stability check, blocks measured slower
+    /// than single calls even with 256-bit vectors (`contact_batch_bench`, `x86-64-v3`).
+    /// Either way the bits are the same.
     const VECTORISES: bool;
 
     /// Checks a time step; see [`ContactLaw::time_step`](crate::ContactLaw::time_step).
@@ -129,10 +128,13 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
 pub struct BoundLaw<'l, L: Law> {
     law: &'l L,
     time_step: TimeStep<L::Float>,
-    pair: Memo<[L::Float; 2], NormalOscillator<L::Float>>,
+    pair: Memo<[L::Float; 2], PairOscillator<L::Float>>,
     wall: Memo<L::Float, NormalOscillator<L::Float>>,
     unstable: usize,
 }
+
+/// A pair of masses' normal oscillator and effective mass.
+type PairOscillator<F> = (NormalOscillator<F>, F);
 
 /// The value derived from the last key. Masses are positive, so the zeros an empty memo starts
 /// from never match.
@@ -161,7 +163,7 @@ impl<'l, L: Law> BoundLaw<'l, L> {
             time_step,
             pair: Memo {
                 key: [<L::Float as Float>::ZERO; 2],
-                value: NormalOscillator::default(),
+                value: (NormalOscillator::default(), <L::Float as Float>::ZERO),
             },
             wall: Memo {
                 key: <L::Float as Float>::ZERO,
@@ -230,14 +232,14 @@ impl<'l, L: Law> BoundLaw<'l, L> {
         L::evaluate_wall(self, sphere, wall, state)
     }
 
-    /// The oscillator of a pair of masses, derived by `derive` only when they differ from the
-    /// last pair's.
+    /// The oscillator and the effective mass of a pair of masses, derived by `derive` only when
+    /// they differ from the last pair's.
     #[inline(always)]
     pub(crate) fn pair_oscillator(
         &mut self,
         masses: [L::Float; 2],
-        derive: impl FnOnce(&[L::Float; 2]) -> NormalOscillator<L::Float>,
-    ) -> &NormalOscillator<L::Float> {
+        derive: impl FnOnce(&[L::Float; 2]) -> PairOscillator<L::Float>,
+    ) -> &PairOscillator<L::Float> {
         self.pair.get(masses, derive)
     }
 

@@ -216,6 +216,12 @@ impl<F: Float> Hertz<F> {
 impl<F: Float> NormalModel<F> for Hertz<F> {
     const CONTACT_RADIUS: bool = true;
 
+    /// `2 E* a`: the force `(4/3) E* a delta` with `a = sqrt(R* delta)`, differentiated.
+    #[inline(always)]
+    fn tangent_stiffness(&self, contact: &NormalContact<F>) -> F {
+        F::TWO * self.effective_modulus * contact.contact_radius
+    }
+
     /// The oscillator linearised at a contact radius of 1 m: tangent stiffness `dF/d delta =
     /// 2 E* a`, dashpot `alpha sqrt(m* (4/3) E*)`.
     #[inline(always)]

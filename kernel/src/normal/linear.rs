@@ -142,6 +142,11 @@ impl<F: Float> LinearSpringDashpot<F> {
 
 impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
     #[inline(always)]
+    fn tangent_stiffness(&self, _: &NormalContact<F>) -> F {
+        self.stiffness
+    }
+
+    #[inline(always)]
     fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F> {
         let natural_frequency = M::sqrt(self.stiffness / effective_mass);
         let decay_rate = self.damping_ratio * natural_frequency;
@@ -220,6 +225,11 @@ impl<F: Float> LinearSpring<F> {
 }
 
 impl<F: Float> NormalModel<F> for LinearSpring<F> {
+    #[inline(always)]
+    fn tangent_stiffness(&self, _: &NormalContact<F>) -> F {
+        self.stiffness
+    }
+
     #[inline(always)]
     fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F> {
         let natural_frequency = M::sqrt(self.stiffness / effective_mass);

@@ -85,6 +85,11 @@ pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
         oscillator: &NormalOscillator<F>,
     ) -> NormalContact<F>;
 
+    /// The tangent stiffness `dF/d delta` of this contact (N/m): `k_n` for a linear law,
+    /// `2 E* a` for [`Hertz`]. The contact's undamped frequency is `sqrt(this / m*)`, which its
+    /// step's stability limit is checked against.
+    fn tangent_stiffness(&self, contact: &NormalContact<F>) -> F;
+
     /// The stiffest contact the law expects for this effective mass, from which the time steps
     /// follow: a linear law's only oscillator; for [`Hertz`], the contact at the peak overlap of
     /// its declared largest impact.
