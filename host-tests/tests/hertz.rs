@@ -767,3 +767,20 @@ fn the_stateless_mindlin_law_follows_its_closed_form_and_step() {
         "the tangential bound is the one checked"
     );
 }
+
+/// A law built from another code's dashpot factor keeps that factor, and its rebound and
+/// duration are the damped impact's, not the undamped one's.
+#[test]
+fn a_given_damping_factor_is_kept_with_its_rebound_and_duration() {
+    let largest = impact(1.0, 1e-3);
+    let given = Hertz::with_damping_factor(1.0e9, 0.5, largest).unwrap();
+    let undamped = Hertz::new(1.0e9, 1.0, largest).unwrap();
+    assert_eq!(given.damping_factor(), 0.5);
+    assert!(given.restitution() < 0.9, "{}", given.restitution());
+    let mass = 1.0e-5;
+    let (damped, elastic) = (
+        soft_sphere::NormalModel::contact_duration(&given, mass),
+        soft_sphere::NormalModel::contact_duration(&undamped, mass),
+    );
+    assert!((damped / elastic - 1.0).abs() > 0.01, "{damped} {elastic}");
+}
