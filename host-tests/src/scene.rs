@@ -1,5 +1,5 @@
-//! The std wrapper around the scene crate's allocation-free [`Scene`]: owns the buffers, builds
-//! the reference packing (a column of spheres on a floor), and writes it for LAMMPS.
+//! What the tests and benchmarks add to the scene crate's [`OwnedScene`]: a rayon executor,
+//! the reference packing (a column of spheres on a floor), and writing it for LAMMPS.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -8,19 +8,8 @@ use rayon::prelude::*;
 
 use crate::energy::kinetic;
 use crate::random::Xorshift;
-use soft_sphere::{CheckedSphere, Float, Law, Sphere, Vec3};
-use soft_sphere_scene::{
-    Domain, Executor, ListEntry, PairResult, Parking, Scene, SceneBuffers, SceneError, Serial,
-    SphereEntry, StepError, StepInput, StepStats, WallEntry, WallSet, check_spheres,
-};
-
-/// Stored contacts a sphere can own at a list rebuild (monodisperse packings have at most 12
-/// neighbours).
-pub const PARKING: usize = 16;
-
-/// Verlet-list room per sphere: a dense monodisperse packing with a skin of a tenth of a
-/// diameter lists about 4.5 pairs per sphere; 8 leaves room for looser skins and denser beds.
-pub const CANDIDATES_PER_SPHERE: usize = 8;
+use soft_sphere::{Float, Law, MaterialTable, MaterialWall, Sphere, Vec3, Wall};
+use soft_sphere_scene::{Domain, Executor, WallSet};
 
 /// A rayon thread pool as the scene's [`Executor`]: each phase of a step (pairs, walls,
 /// integration) is spread over the pool's threads.
@@ -51,142 +40,25 @@ impl Executor for Threads {
     }
 }
 
-/// A scene of law `L` with walls `W`, and all its buffers.
-#[derive(Clone, Debug)]
-pub struct OwnedScene<L: Law, W> {
-    /// The spheres.
-    pub spheres: Vec<CheckedSphere<L::Float>>,
-    /// The walls.
-    pub walls: W,
-    entries: Vec<SphereEntry<L::Float>>,
-    cells: Vec<u32>,
-    list: Vec<ListEntry<L::State>>,
-    parking: Vec<Parking<L::State, PARKING>>,
-    wall_states: Vec<WallEntry<L::State>>,
-    pair_results: Vec<PairResult<L::Float>>,
-    /// The box.
-    pub domain: Domain<L::Float>,
-    largest_diameter: L::Float,
-    skin: L::Float,
-    /// Verlet-list builds of the last run.
-    pub list_builds: usize,
+pub use soft_sphere_scene::OwnedScene;
+
+/// What the tests and benchmarks read of an [`OwnedScene`] beyond its own methods.
+pub trait SceneExt<F> {
+    /// The spheres, unchecked.
+    fn plain_spheres(&self) -> Vec<Sphere<F>>;
+    /// Sets every velocity and spin to zero (keeps the contacts' stored springs).
+    fn stop(&mut self);
+    /// Translational plus rotational kinetic energy (J).
+    fn kinetic_energy(&self) -> f64;
 }
 
-impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
-    /// A scene of `spheres` in `domain` with `walls`, a Verlet list with `skin`, and spheres no
-    /// larger than `largest_diameter`. The spheres are checked, then reordered along the cell
-    /// grid (z, then y, then x) so that neighbours sit close in memory, as LAMMPS's atom sort
-    /// does.
-    ///
-    /// # Errors
-    /// The scene's [`SceneError`]; [`SceneError::Sphere`] names the sphere by its index in
-    /// `spheres`.
-    pub fn new(
-        spheres: Vec<Sphere<L::Float>>,
-        domain: Domain<L::Float>,
-        (largest_diameter, skin): (L::Float, L::Float),
-        walls: W,
-    ) -> Result<Self, SceneError> {
-        let mut spheres = check_spheres(spheres).collect::<Result<Vec<_>, _>>()?;
-        let n = spheres.len();
-        let capacity = CANDIDATES_PER_SPHERE * n + 64;
-        let sizes = Scene::<L, W, PARKING>::buffer_sizes(
-            &domain,
-            (largest_diameter, skin),
-            n,
-            capacity,
-            true,
-        )?;
-        let cell = (largest_diameter + skin).to_f64();
-        let key = |s: &CheckedSphere<L::Float>| {
-            let p = (s.position - domain.lower)
-                .to_array()
-                .map(|x| (x.to_f64() / cell) as i64);
-            (p[2], p[1], p[0])
-        };
-        spheres.sort_by_key(key);
-        Ok(Self {
-            spheres,
-            walls,
-            entries: vec![SphereEntry::default(); sizes.spheres],
-            cells: vec![0; sizes.cells],
-            list: vec![ListEntry::default(); sizes.list],
-            parking: vec![Parking::default(); sizes.parking],
-            wall_states: vec![WallEntry::default(); sizes.walls],
-            pair_results: vec![PairResult::default(); sizes.pair_results],
-            domain,
-            largest_diameter,
-            skin,
-            list_builds: 0,
-        })
+impl<L: Law, W: WallSet<L::Float> + Clone> SceneExt<L::Float> for OwnedScene<L, W> {
+    fn plain_spheres(&self) -> Vec<Sphere<L::Float>> {
+        self.spheres().iter().map(|s| s.into_inner()).collect()
     }
 
-    /// Runs `steps` steps, calling `each` with every step's totals.
-    ///
-    /// Each call starts the scene afresh (the list is rebuilt, the stored springs carry over).
-    ///
-    /// # Errors
-    /// The first [`StepError`].
-    pub fn run(
-        &mut self,
-        input: &StepInput<'_, L>,
-        steps: usize,
-        each: impl FnMut(usize, &StepStats<L::Float>),
-    ) -> Result<(), StepError> {
-        self.run_on(input, steps, &Serial, each)
-    }
-
-    /// [`OwnedScene::run`] with the work of each step spread over `executor` (for example
-    /// [`Threads`]); the same bits as a serial run.
-    ///
-    /// # Errors
-    /// As [`OwnedScene::run`].
-    pub fn run_on<E: Executor>(
-        &mut self,
-        input: &StepInput<'_, L>,
-        steps: usize,
-        executor: &E,
-        mut each: impl FnMut(usize, &StepStats<L::Float>),
-    ) -> Result<(), StepError> {
-        let buffers = SceneBuffers {
-            spheres: &mut self.entries,
-            cells: &mut self.cells,
-            list: &mut self.list,
-            parking: &mut self.parking,
-            walls: &mut self.wall_states,
-            pair_results: &mut self.pair_results,
-        };
-        let mut scene = Scene::new(
-            self.domain,
-            (self.largest_diameter, self.skin),
-            &mut self.spheres,
-            buffers,
-            self.walls.clone(),
-        )
-        .unwrap_or_else(|error| unreachable!("checked by OwnedScene::new: {error}"));
-        let mut outcome = Ok(());
-        for step in 0..steps {
-            match scene.step_on(input, executor) {
-                Ok(stats) => each(step, &stats),
-                Err(error) => {
-                    outcome = Err(error);
-                    break;
-                }
-            }
-        }
-        self.list_builds = scene.list_builds();
-        self.walls = scene.walls().clone();
-        outcome
-    }
-
-    /// The spheres, unchecked.
-    pub fn plain_spheres(&self) -> Vec<Sphere<L::Float>> {
-        self.spheres.iter().map(|s| s.into_inner()).collect()
-    }
-
-    /// Sets every velocity and spin to zero (keeps the contacts' stored springs).
-    pub fn stop(&mut self) {
-        for s in &mut self.spheres {
+    fn stop(&mut self) {
+        for s in self.spheres_mut() {
             let stopped = s.update(|s| {
                 s.velocity = Vec3::ZERO;
                 s.angular_velocity = Vec3::ZERO;
@@ -195,10 +67,28 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
         }
     }
 
-    /// Translational plus rotational kinetic energy (J).
-    pub fn kinetic_energy(&self) -> f64 {
-        self.spheres.iter().map(|s| kinetic(s)).sum()
+    fn kinetic_energy(&self) -> f64 {
+        self.spheres().iter().map(|s| kinetic(s)).sum()
     }
+}
+
+/// The table of a scene whose spheres are material 0 and whose walls are material 1: `pair`
+/// between spheres, `wall` between a sphere and a wall.
+pub fn pair_and_wall<L: Law>(pair: L, wall: L) -> MaterialTable<L, 2> {
+    let mut table = MaterialTable::uniform(pair);
+    for (a, b) in [(0, 1), (1, 1)] {
+        let set = table.set(a, b, wall);
+        debug_assert!(
+            set.is_ok(),
+            "materials 0 and 1 are rows of a 2-material table"
+        );
+    }
+    table
+}
+
+/// A wall of material `material` (1 in a [`pair_and_wall`] table).
+pub fn wall_of<F: Float>(wall: Wall<F>, material: u32) -> MaterialWall<F> {
+    MaterialWall { wall, material }
 }
 
 /// The reference scene: monodisperse spheres in a column periodic in x and y on a

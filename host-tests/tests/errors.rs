@@ -387,9 +387,39 @@ fn every_error_message_names_what_went_wrong() {
             &["sphere 7", "mass"],
         ),
         (
-            StepError::Contact(ContactError::CoincidentCentres).to_string(),
-            &["centres"],
+            StepError::Pair {
+                spheres: [4, 9],
+                error: ContactError::CoincidentCentres,
+            }
+            .to_string(),
+            &["spheres 4 and 9", "centres"],
         ),
+        (
+            StepError::Wall {
+                sphere: 2,
+                wall: 1,
+                error: ContactError::PastStableStep,
+            }
+            .to_string(),
+            &["sphere 2", "wall 1", "stab"],
+        ),
+        (
+            StepError::Material {
+                sphere: 5,
+                material: 3,
+            }
+            .to_string(),
+            &["sphere 5", "material 3"],
+        ),
+        (
+            StepError::WallMaterial {
+                wall: 1,
+                material: 8,
+            }
+            .to_string(),
+            &["wall 1", "material 8"],
+        ),
+        (SceneError::Materials.to_string(), &["material"]),
         (StepError::ListFull.to_string(), &["list"]),
         (StepError::ParkingFull.to_string(), &["parking"]),
         (StepError::Diverged { index: 3 }.to_string(), &["sphere 3"]),

@@ -9,7 +9,7 @@ use soft_sphere::{
     Backup, ContactError, ContactLaw, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
     Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray, ListError,
     ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, Parameter,
-    ParameterError, Route, SphereArrays, SpringDisplacement, TableError, Vec3, Wall,
+    ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
     effective_mass,
 };
 
@@ -313,6 +313,7 @@ fn mixture_bits(route: Route) {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         let list = ContactList {
             pairs: &m.pairs,
+            shifts: &[],
             pair_states: &mut states,
             walls: &walls,
             wall_states: &mut wall_states,
@@ -423,6 +424,7 @@ fn try_route(
         arrays,
         ContactList {
             pairs,
+            shifts: &[],
             pair_states: &mut states,
             walls,
             wall_states: &mut wall_states,
@@ -522,6 +524,7 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             &m.arrays(),
             ContactList {
                 pairs: &m.pairs,
+                shifts: &[],
                 pair_states: &mut states[..p - usize::from(cut == 0)],
                 walls: &walls,
                 wall_states: &mut wall_states[..w - usize::from(cut == 1)],
@@ -861,6 +864,7 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
                 &spheres,
                 ContactList {
                     pairs: &pairs,
+                    shifts: &[],
                     pair_states: &mut states,
                     walls: &[],
                     wall_states: &mut [],
@@ -956,6 +960,7 @@ fn an_empty_list_and_walls_alone_work() {
             &arrays,
             ContactList {
                 pairs: &[],
+                shifts: &[],
                 pair_states: &mut [],
                 walls: &walls,
                 wall_states: &mut wall_states,

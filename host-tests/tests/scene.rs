@@ -4,15 +4,15 @@
 //! stored springs survive Verlet-list rebuilds; bad spheres and failed steps have defined answers.
 
 use host_tests::random::Xorshift;
-use host_tests::scene::{Column, OwnedScene, Threads};
+use host_tests::scene::{Column, OwnedScene, SceneExt, Threads, pair_and_wall, wall_of};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    CheckedSphere, ContactError, ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere,
-    SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
+    CheckedSphere, ContactError, ContactLaw, Interaction, LinearSpringDashpot, MaterialTable,
+    MaterialWall, ModelAA, Sphere, SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{
-    Domain, Integrator, ListEntry, NoWalls, Parking, Scene, SceneBuffers, SceneError, SphereEntry,
-    StepError, StepInput, StepStats, WallEntry, WallSet,
+    Domain, Integrator, NoWalls, Parking, Scene, SceneBuffers, SceneError, StepError, StepInput,
+    StepStats, WallSet,
 };
 
 const DIAMETER: f64 = 1e-3;
@@ -47,15 +47,30 @@ fn law() -> Law {
 
 type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
 
+/// One material: [`law`] for pairs and walls.
+type Table = MaterialTable<Law, 1>;
+
+fn table() -> Table {
+    MaterialTable::uniform(law())
+}
+
+/// A wall of the one material.
+fn wall(point: Vec3<f64>, normal: Vec3<f64>) -> MaterialWall<f64> {
+    MaterialWall {
+        wall: Wall::new(point, normal).unwrap(),
+        material: 0,
+    }
+}
+
 /// One law for pairs and walls, stepped at `dt` for a pair of these spheres' mass.
 fn input(
-    law: &Law,
+    table: &Table,
     (gravity, dt, sphere_mass): (Vec3<f64>, f64, f64),
     integrator: Integrator,
-) -> StepInput<'_, Law> {
+) -> StepInput<'_, Law, 1> {
+    let law = table.law(0, 0).unwrap();
     StepInput {
-        law,
-        wall_law: law,
+        table,
         gravity,
         time_step: law.time_step(dt, sphere_mass / 2.0).unwrap(),
         integrator,
@@ -123,7 +138,7 @@ fn random_packing(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
 
 #[test]
 fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
-    let law = law();
+    let law = table();
     // The box at the origin, and moved off it (cells are counted from its lower corner).
     let offset = Vec3::new(-3.1e-3, 1.7e-3, 2.3e-3);
     let mut across = 0;
@@ -135,11 +150,11 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
         (domain.lower, domain.upper) = (domain.lower + shift, domain.upper + shift);
         let mut scene =
             OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
-        let m = scene.spheres[0].mass;
+        let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), Integrator::SymplecticEuler);
         let lengths = domain.upper - domain.lower;
         for _ in 0..20 {
-            let before = scene.spheres.clone();
+            let before = scene.spheres().to_vec();
             let mut found = 0;
             scene
                 .run(&input, 1, |_, stats| found = stats.pair_contacts)
@@ -157,25 +172,25 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
 
 #[test]
 fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
-    let law = law();
+    let law = table();
     let run = |integrator| {
         let (spheres, domain) = gas(300, 9);
         let mut scene =
             OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
-        let m = scene.spheres[0].mass;
+        let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), integrator);
         let momentum = |s: &[CheckedSphere<f64>]| {
             s.iter()
                 .fold(Vec3::ZERO, |p, s| p + s.velocity * s.mass)
                 .to_array()
         };
-        let before = momentum(&scene.spheres);
+        let before = momentum(&scene.spheres());
         let mut contacts = 0;
         scene
             .run(&input, 2000, |_, stats| contacts += stats.pair_contacts)
             .unwrap();
-        let after = momentum(&scene.spheres);
-        let scale: f64 = scene.spheres.iter().map(|s| s.mass * 0.2).sum();
+        let after = momentum(&scene.spheres());
+        let scale: f64 = scene.spheres().iter().map(|s| s.mass * 0.2).sum();
         for k in 0..3 {
             assert!(
                 (after[k] - before[k]).abs() < 1e-12 * scale,
@@ -186,7 +201,7 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
             contacts > 100,
             "the gas collided ({contacts} contact-steps)"
         );
-        scene.spheres
+        scene.spheres().to_vec()
     };
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let (a, b) = (run(integrator), run(integrator));
@@ -205,24 +220,24 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
 
 #[test]
 fn both_integrators_settle_a_bed_on_the_floor() {
-    let law = law();
-    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    let law = table();
+    let floor = [wall(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))];
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let (spheres, domain) = gas(150, 3);
         let potential: f64 = spheres.iter().map(|s| s.mass * 9.81 * s.position.z).sum();
         let mut scene =
             OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
-        let m = scene.spheres[0].mass;
+        let m = scene.spheres()[0].mass;
         let gravity = Vec3::new(0.0, 0.0, -9.81);
         let input = input(&law, (gravity, 4e-6, m), integrator);
         scene.run(&input, 40_000, |_, _| {}).unwrap();
         let lowest = scene
-            .spheres
+            .spheres()
             .iter()
             .map(|s| s.position.z)
             .fold(f64::MAX, f64::min);
         let highest = scene
-            .spheres
+            .spheres()
             .iter()
             .map(|s| s.position.z)
             .fold(0.0, f64::max);
@@ -263,6 +278,7 @@ fn oblique_pair() -> Vec<Sphere<f64>> {
 
 #[test]
 fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
+    let table = table();
     let law = law();
     let steps = 150;
     let mass = oblique_pair()[0].mass;
@@ -293,16 +309,23 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
 
     // The scene: a wide skin (one list build), no skin (a build every step), and a fresh scene
     // every step (the history parked and found again each time).
-    let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
+    let input = input(
+        &table,
+        (Vec3::ZERO, 2e-6, mass),
+        Integrator::SymplecticEuler,
+    );
     for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
         let mut scene =
             OwnedScene::<Law, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), NoWalls)
                 .unwrap();
-        assert!(scene.spheres[0].position.x < 1e-3, "sorted: A is sphere 0");
+        assert!(
+            scene.spheres()[0].position.x < 1e-3,
+            "sorted: A is sphere 0"
+        );
         for _ in 0..calls {
             scene.run(&input, steps / calls, |_, _| {}).unwrap();
         }
-        for (ours, direct) in scene.spheres.iter().zip([a, b]) {
+        for (ours, direct) in scene.spheres().iter().zip([a, b]) {
             let bits = |s: &Sphere<f64>| {
                 [s.position, s.velocity, s.angular_velocity].map(|v| v.to_array().map(f64::to_bits))
             };
@@ -332,14 +355,15 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
 }
 
 /// Fresh buffers in vectors for `spheres` spheres in [`open_box`] without skin, a list of
-/// `capacity` entries, `walls` wall entries (checked against `W`'s count by the scene), and `K`
-/// parked contacts per sphere.
+/// `capacity` entries, states sized for `walls` walls (checked against `W`'s count by the
+/// scene), and `K` parked contacts per sphere, all of material 0.
 struct VecBuffers<const K: usize> {
-    entries: Vec<SphereEntry<f64>>,
     cells: Vec<u32>,
-    list: Vec<ListEntry<SpringDisplacement<f64>>>,
+    pairs: Vec<[u32; 2]>,
+    vectors: Vec<Vec3<f64>>,
+    states: Vec<SpringDisplacement<f64>>,
     parking: Vec<Parking<SpringDisplacement<f64>, K>>,
-    walls: Vec<WallEntry<SpringDisplacement<f64>>>,
+    materials: Vec<u32>,
 }
 
 impl<const K: usize> VecBuffers<K> {
@@ -353,38 +377,49 @@ impl<const K: usize> VecBuffers<K> {
         )
         .unwrap();
         Self {
-            entries: vec![SphereEntry::default(); sizes.spheres],
             cells: vec![0; sizes.cells],
-            list: vec![ListEntry::default(); sizes.list],
+            pairs: vec![[0; 2]; sizes.pairs],
+            vectors: vec![Vec3::ZERO; sizes.vectors],
+            states: vec![SpringDisplacement::default(); sizes.states + 2 * spheres * walls],
             parking: vec![Parking::default(); sizes.parking],
-            walls: vec![WallEntry::default(); walls],
+            materials: vec![0; spheres],
         }
     }
 
-    fn buffers(&mut self) -> SceneBuffers<'_, f64, SpringDisplacement<f64>, K> {
-        SceneBuffers {
-            spheres: &mut self.entries,
+    fn buffers(&mut self) -> (&[u32], SceneBuffers<'_, f64, SpringDisplacement<f64>, K>) {
+        let buffers = SceneBuffers {
             cells: &mut self.cells,
-            list: &mut self.list,
+            pairs: &mut self.pairs,
+            vectors: &mut self.vectors,
+            states: &mut self.states,
             parking: &mut self.parking,
-            walls: &mut self.walls,
-            pair_results: &mut [],
-        }
+            records: &mut [],
+        };
+        (&self.materials, buffers)
+    }
+
+    /// The contact history of `other` (its list's pairs and their states) at the front of
+    /// these buffers, as a caller moves to a longer list or a larger parking.
+    fn carry_history_from<const J: usize>(&mut self, other: &VecBuffers<J>) {
+        let list = other.pairs.len();
+        self.pairs[..list].copy_from_slice(&other.pairs);
+        self.states[..list].copy_from_slice(&other.states[..list]);
     }
 
     /// A scene without walls over these buffers, run for at most `steps` steps; how many
     /// succeeded, whether a pair touched in the last, and the error that stopped it.
     fn run(
         &mut self,
-        input: &StepInput<'_, Law>,
+        input: &StepInput<'_, Law, 1>,
         spheres: &mut [CheckedSphere<f64>],
         steps: usize,
     ) -> (usize, bool, Option<StepError>) {
+        let (materials, buffers) = self.buffers();
         let mut scene = Scene::new(
             open_box(),
             (DIAMETER, 0.0),
-            spheres,
-            self.buffers(),
+            (spheres, materials),
+            buffers,
             NoWalls,
         )
         .unwrap();
@@ -413,45 +448,60 @@ fn checked_pair() -> Vec<CheckedSphere<f64>> {
 
 #[test]
 fn buffers_that_do_not_fit_the_walls_are_refused() {
-    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    let floor = [wall(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))];
     let two_walls = [
         floor[0],
-        Wall::new(Vec3::new(0.0, 0.0, 0.006), Vec3::new(0.0, 0.0, -1.0)).unwrap(),
+        wall(Vec3::new(0.0, 0.0, 0.006), Vec3::new(0.0, 0.0, -1.0)),
     ];
-    // One entry per sphere and wall: two spheres and one wall need two, two walls four.
-    for (entries, refused_with_one, refused_with_two) in [
+    // States sized for 0, 1, 2 or 3 walls: only the walls' own count is taken.
+    for (sized_for, refused_with_one, refused_with_two) in [
         (0, true, true),
-        (2, false, true),
-        (4, true, false),
+        (1, false, true),
+        (2, true, false),
         (3, true, true),
     ] {
         let refused = |error| error == Some(SceneError::BufferLength);
         assert_eq!(
-            refused(pair_scene_error(entries, floor)),
+            refused(pair_scene_error(sized_for, floor)),
             refused_with_one,
-            "{entries} entries, one wall"
+            "states for {sized_for} walls, one wall"
         );
         assert_eq!(
-            refused(pair_scene_error(entries, two_walls)),
+            refused(pair_scene_error(sized_for, two_walls)),
             refused_with_two,
-            "{entries} entries, two walls"
+            "states for {sized_for} walls, two walls"
         );
     }
-    // Without walls no entry is needed, and none is accepted.
     assert_eq!(pair_scene_error(0, NoWalls), None);
     assert_eq!(pair_scene_error(1, NoWalls), Some(SceneError::BufferLength));
 }
 
-/// What building a scene of [`checked_pair`] over fresh buffers with `wall_entries` wall entries
-/// and `walls` gives: `None` when the scene is built.
-fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<SceneError> {
+#[test]
+fn material_ids_that_are_not_one_per_sphere_are_refused() {
     let mut spheres = checked_pair();
-    let mut b = pair_buffers(wall_entries);
+    let mut b = pair_buffers(0);
+    let (_, buffers) = b.buffers();
+    let scene = Scene::<Law, _, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        (&mut spheres, &[0]),
+        buffers,
+        NoWalls,
+    );
+    assert_eq!(scene.err(), Some(SceneError::Materials));
+}
+
+/// What building a scene of [`checked_pair`] over fresh buffers with states sized for
+/// `sized_for` walls and `walls` gives: `None` when the scene is built.
+fn pair_scene_error<W: WallSet<f64>>(sized_for: usize, walls: W) -> Option<SceneError> {
+    let mut spheres = checked_pair();
+    let mut b = pair_buffers(sized_for);
+    let (materials, buffers) = b.buffers();
     Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut spheres,
-        b.buffers(),
+        (&mut spheres, materials),
+        buffers,
         walls,
     )
     .err()
@@ -459,20 +509,21 @@ fn pair_scene_error<W: WallSet<f64>>(wall_entries: usize, walls: W) -> Option<Sc
 
 /// A scene of [`checked_pair`] over `buffers`, stepped until the pair touches (at most 500 steps).
 fn step_pair_until_touching<'a>(
-    law: &Law,
+    table: &Table,
     pair: &'a mut [CheckedSphere<f64>],
     buffers: &'a mut VecBuffers<4>,
 ) -> Scene<'a, Law, NoWalls, 4> {
     let input = input(
-        law,
+        table,
         (Vec3::ZERO, 2e-6, pair[0].mass),
         Integrator::SymplecticEuler,
     );
+    let (materials, buffers) = buffers.buffers();
     let mut scene = Scene::new(
         open_box(),
         (DIAMETER, 0.0),
-        pair,
-        buffers.buffers(),
+        (pair, materials),
+        buffers,
         NoWalls,
     )
     .unwrap();
@@ -483,36 +534,38 @@ fn step_pair_until_touching<'a>(
 
 #[test]
 fn stored_states_of_pairs_outside_the_scene_are_refused() {
-    let law = law();
+    let law = table();
     let mut pair = checked_pair();
     let mut b = pair_buffers(0);
     step_pair_until_touching(&law, &mut pair, &mut b);
     // The list now holds the pair's stored spring. The same two spheres take it back...
     let mut again = pair.clone();
+    let (materials, buffers) = b.buffers();
     assert!(
         Scene::<Law, _, 4>::new(
             open_box(),
             (DIAMETER, 0.0),
-            &mut again,
-            b.buffers(),
+            (&mut again, materials),
+            buffers,
             NoWalls
         )
         .is_ok()
     );
     // ... a scene of the first sphere alone does not own it.
-    let cells = b.cells.len() - 1;
+    let alone =
+        Scene::<Law, NoWalls, 4>::buffer_sizes(&open_box(), (DIAMETER, 0.0), 1, 4, false).unwrap();
     let buffers = SceneBuffers {
-        spheres: &mut b.entries[..1],
-        cells: &mut b.cells[..cells],
-        list: &mut b.list,
+        cells: &mut b.cells[..alone.cells],
+        pairs: &mut b.pairs,
+        vectors: &mut b.vectors[..alone.vectors],
+        states: &mut b.states[..alone.states],
         parking: &mut b.parking[..1],
-        walls: &mut [],
-        pair_results: &mut [],
+        records: &mut [],
     };
     let alone = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut pair[..1],
+        (&mut pair[..1], &[0]),
         buffers,
         NoWalls,
     );
@@ -521,25 +574,28 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
 
 #[test]
 fn a_failed_step_leaves_the_scene_as_it_was() {
-    let law = law();
+    let law = table();
     let mut spheres = oblique_pair();
     // A third sphere on top of the first: its contact has no normal.
     spheres.push(spheres[0]);
     let mass = spheres[0].mass;
     let mut scene =
         OwnedScene::<Law, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls).unwrap();
-    let before = scene.spheres.clone();
+    let before = scene.spheres().to_vec();
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     assert_eq!(
         scene.run(&input, 1, |_, _| {}),
-        Err(StepError::Contact(ContactError::CoincidentCentres))
+        Err(StepError::Pair {
+            spheres: [0, 2],
+            error: ContactError::CoincidentCentres
+        })
     );
-    assert_eq!(scene.spheres, before);
+    assert_eq!(scene.spheres(), before);
 }
 
 #[test]
 fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
-    let law = law();
+    let law = table();
     let mut spheres = checked_pair();
     // Finite, so the sphere is valid; gravity along it pushes it past the largest float in one
     // kick.
@@ -552,11 +608,12 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
         Integrator::SymplecticEuler,
     );
     let mut b = pair_buffers(0);
+    let (materials, buffers) = b.buffers();
     let mut scene = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut spheres,
-        b.buffers(),
+        (&mut spheres, materials),
+        buffers,
         NoWalls,
     )
     .unwrap();
@@ -569,7 +626,7 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
 
 #[test]
 fn threads_give_the_same_bits_as_one_thread() {
-    let law = law();
+    let law = table();
     // A floor, and a ceiling through the top layer, so that spheres at both ends of the sphere
     // order (each end in another thread's stretch) have stored wall contacts.
     let top = gas(1000, 5)
@@ -578,12 +635,11 @@ fn threads_give_the_same_bits_as_one_thread() {
         .map(|s| s.position.z)
         .fold(0.0, f64::max);
     let walls = [
-        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
-        Wall::new(
+        wall(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)),
+        wall(
             Vec3::new(0.0, 0.0, top + 0.45 * DIAMETER),
             Vec3::new(0.0, 0.0, -1.0),
-        )
-        .unwrap(),
+        ),
     ];
     let gravity = Vec3::new(0.0, 0.0, -9.81);
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
@@ -591,7 +647,7 @@ fn threads_give_the_same_bits_as_one_thread() {
             let (spheres, domain) = gas(1000, 5);
             let mut scene =
                 OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), walls).unwrap();
-            let m = scene.spheres[0].mass;
+            let m = scene.spheres()[0].mass;
             let input = input(&law, (gravity, 4e-6, m), integrator);
             let mut contacts = Vec::new();
             let record = |_: usize, s: &StepStats<f64>| {
@@ -604,7 +660,7 @@ fn threads_give_the_same_bits_as_one_thread() {
                     scene.run_on(&input, 1000, &pool, record).unwrap();
                 }
             }
-            (scene.spheres, contacts)
+            (scene.spheres().to_vec(), contacts)
         };
         let (serial, serial_contacts) = run(None);
         // The gas fell onto the floor and collided on the way.
@@ -628,7 +684,7 @@ fn threads_give_the_same_bits_as_one_thread() {
 
 #[test]
 fn the_loads_of_a_touching_pair_are_action_and_reaction() {
-    let law = law();
+    let law = table();
     let mut pair = checked_pair();
     let mut b = pair_buffers(0);
     let scene = step_pair_until_touching(&law, &mut pair, &mut b);
@@ -667,7 +723,7 @@ fn motion_bits(spheres: &[CheckedSphere<f64>]) -> Vec<[[u64; 3]; 3]> {
 
 #[test]
 fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
-    let law = law();
+    let law = table();
     let mass = oblique_pair()[0].mass;
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     let after = 60;
@@ -688,7 +744,7 @@ fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
         );
         // The documented recovery: a larger list over the same history.
         let mut large = VecBuffers::<4>::new(3, 4, 0);
-        large.list[..1].copy_from_slice(&small.list);
+        large.carry_history_from(&small);
         let (done, _, error) = large.run(&input, &mut spheres, after);
         assert_eq!((done, error), (after, None));
 
@@ -707,7 +763,7 @@ fn a_full_list_loses_no_history_and_a_larger_one_carries_on() {
 
 #[test]
 fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
-    let law = law();
+    let law = table();
     let mass = oblique_pair()[0].mass;
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     // Sphere 0 owns both its contacts (the lower index owns a pair): with room to park one,
@@ -719,7 +775,7 @@ fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
     assert!(touching);
     // The same list with room to park four.
     let mut wide = VecBuffers::<4>::new(3, 4, 0);
-    wide.list.copy_from_slice(&narrow.list);
+    wide.carry_history_from(&narrow);
     let after = 60;
     assert_eq!(wide.run(&input, &mut spheres, after).0, after);
 
@@ -746,13 +802,13 @@ fn each_steps_totals_are_what_a_brute_force_search_finds() {
         .map(|s| s.position.z)
         .fold(f64::INFINITY, f64::min);
     let height = lowest - 0.45 * DIAMETER;
-    let floor = Wall::new(Vec3::new(0.0, 0.0, height), Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let floor = wall(Vec3::new(0.0, 0.0, height), Vec3::new(0.0, 0.0, 1.0));
     let mut scene =
         OwnedScene::<Plain, _>::new(spheres, domain, (DIAMETER, 1e-4), [floor]).unwrap();
-    let m = scene.spheres[0].mass;
+    let m = scene.spheres()[0].mass;
+    let plain_table = MaterialTable::<Plain, 1>::uniform(law);
     let input = StepInput {
-        law: &law,
-        wall_law: &law,
+        table: &plain_table,
         gravity: Vec3::new(0.0, 0.0, -9.81),
         time_step: law.time_step(4e-6, m / 2.0).unwrap(),
         integrator: Integrator::SymplecticEuler,
@@ -760,7 +816,7 @@ fn each_steps_totals_are_what_a_brute_force_search_finds() {
     let (lx, ly) = (domain.upper.x, domain.upper.y);
     let (mut pairs_seen, mut sliding_seen, mut walls_seen) = (0, 0, 0);
     for _ in 0..200 {
-        let before = scene.spheres.clone();
+        let before = scene.spheres().to_vec();
         let mut stats = StepStats::default();
         scene.run(&input, 1, |_, s| stats = *s).unwrap();
         let mut expected = StepStats::<f64>::default();
@@ -788,6 +844,13 @@ fn each_steps_totals_are_what_a_brute_force_search_finds() {
             .iter()
             .filter(|s| s.position.z - height < s.radius)
             .count();
+        // Sliding counts the walls' contacts too.
+        for sphere in &before {
+            let contact = law.sphere_wall(sphere, &floor.wall, &mut (), input.time_step);
+            if let Ok(Interaction::Touching(c)) = contact {
+                expected.sliding_contacts += usize::from(c.sliding);
+            }
+        }
         assert_eq!(
             (
                 stats.pair_contacts,
@@ -818,7 +881,7 @@ fn each_steps_totals_are_what_a_brute_force_search_finds() {
 
 #[test]
 fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box() {
-    let law = law();
+    let law = table();
     let skin = 1e-4;
     // One sphere drifting in x at 1.1e-6 m a step, one at rest far from it: after 46 steps
     // it has moved 5.06e-5 m, past half the skin (5e-5 m), after 45 only 4.95e-5 m.
@@ -834,7 +897,7 @@ fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box(
         let mut scene =
             OwnedScene::<Law, _>::new(spheres(x), open_box(), (DIAMETER, skin), NoWalls).unwrap();
         scene.run(&input, steps, |_, _| {}).unwrap();
-        scene.list_builds
+        scene.list_builds()
     };
     // Symplectic Euler evaluates before it moves, so the 47th step's evaluation sees the 46th
     // step's motion; velocity Verlet moves first, so its 46th step does.
@@ -874,22 +937,25 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
     type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
     // Cells at least 1.1 mm on a side in a 6 mm box: 5 x 5 x 5.
     let reach = (DIAMETER, 1e-4);
-    let stored = Scene::<Law, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, true);
+    let stored =
+        Scene::<Law, [MaterialWall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, true);
     assert_eq!(
         stored,
         Ok(soft_sphere_scene::BufferSizes {
-            spheres: 7,
             cells: 125 + 1 + 7,
-            list: 40,
+            pairs: 40,
+            vectors: 40 + 5 * 7,
+            // The list's states and two per sphere (one per wall), and their copy.
+            states: 2 * (40 + 7 * 2),
             parking: 7,
-            walls: 14,
-            pair_results: 40,
+            records: 40 + 7 * 2,
         })
     );
-    // A law that stores nothing needs no parking and no wall states; a serial scene no results.
-    let plain = Scene::<Plain, [Wall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, false);
+    // A law that stores nothing needs no parking; a scene without records no records.
+    let plain =
+        Scene::<Plain, [MaterialWall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, false);
     let plain = plain.unwrap();
-    assert_eq!((plain.parking, plain.walls, plain.pair_results), (0, 0, 0));
+    assert_eq!((plain.parking, plain.records), (0, 0));
 
     // A periodic direction needs 3 cells (the half shell would visit a pair twice); a closed
     // one does with fewer.
@@ -910,11 +976,12 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
     for skin in [-1e-4, f64::NAN, f64::INFINITY] {
         let mut spheres = checked_pair();
         let mut b = pair_buffers(0);
+        let (materials, buffers) = b.buffers();
         let scene = Scene::<Law, _, 4>::new(
             open_box(),
             (DIAMETER, skin),
-            &mut spheres,
-            b.buffers(),
+            (&mut spheres, materials),
+            buffers,
             NoWalls,
         );
         assert_eq!(scene.err(), Some(SceneError::Domain), "skin {skin}");
@@ -932,29 +999,31 @@ fn integrators_have_distinct_file_name_safe_names() {
 
 #[test]
 fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
-    let law = law();
+    let law = table();
     let mut spheres = checked_pair();
     let mass = spheres[0].mass;
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     // A wall facing +x, 0.1 mm beyond sphere 0's left side (sphere 1 is far in front of it).
     let left = spheres[0].position.x - spheres[0].radius;
-    let wall = Wall::new(Vec3::new(left - 1e-4, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0)).unwrap();
-    let mut b = pair_buffers(2);
+    let wall = wall(Vec3::new(left - 1e-4, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0));
+    let mut b = pair_buffers(1);
+    let (materials, buffers) = b.buffers();
     let mut scene = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut spheres,
-        b.buffers(),
+        (&mut spheres, materials),
+        buffers,
         [wall],
     )
     .unwrap();
     assert_eq!(scene.step(&input).unwrap().wall_contacts, 0);
     // Moved 0.2 mm toward the sphere: it now overlaps sphere 0 by about 0.1 mm.
     let moved = scene.walls()[0]
+        .wall
         .moved_to(Vec3::new(left + 1e-4, 0.0, 0.0))
         .unwrap();
-    scene.walls_mut()[0] = moved;
-    assert_eq!(scene.walls()[0].point(), moved.point());
+    scene.walls_mut()[0].wall = moved;
+    assert_eq!(scene.walls()[0].wall.point(), moved.point());
     assert_eq!(scene.step(&input).unwrap().wall_contacts, 1);
     let (force, _) = scene.load(0).unwrap();
     assert!(force.x > 0.0, "the wall pushes sphere 0 in +x: {force:?}");
@@ -963,7 +1032,7 @@ fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
 
 #[test]
 fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
-    let law = law();
+    let law = table();
     let g = 9.81;
     let (dt, steps) = (2e-6, 500);
     for integrator in Integrator::ALL {
@@ -976,7 +1045,11 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
                 .unwrap();
         let input = input(&law, (Vec3::new(0.0, 0.0, -g), dt, mass), integrator);
         scene.run(&input, steps, |_, _| {}).unwrap();
-        let moved = scene.spheres.iter().find(|s| s.position.x > 1e-3).unwrap();
+        let moved = scene
+            .spheres()
+            .iter()
+            .find(|s| s.position.x > 1e-3)
+            .unwrap();
         // Velocity Verlet is exact under a constant force; symplectic Euler kicks first, so it
         // falls g dt^2 n / 2 further.
         let (n, v0) = (steps as f64, 0.3);
@@ -1000,12 +1073,12 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
 
 #[test]
 fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
-    let law = law();
+    let law = table();
     let (spheres, domain) = gas(1000, 7);
     let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
-    let m = scene.spheres[0].mass;
+    let m = scene.spheres()[0].mass;
     // Far into the second half of the spheres, which a second thread advances.
-    scene.spheres[900]
+    scene.spheres_mut()[900]
         .update(|s| s.velocity.x = f64::MAX)
         .unwrap();
     let input = input(
@@ -1048,12 +1121,12 @@ type StepInputParts = (f64, f64);
 
 #[test]
 fn the_box_is_half_open_and_the_skin_test_strict() {
-    let law = law();
+    let law = table();
     let step = 2f64.powi(-20);
     let lower = -(2f64.powi(-8));
     let moving = |scene: &OwnedScene<Law, NoWalls>| {
         scene
-            .spheres
+            .spheres()
             .iter()
             .find(|s| s.velocity.x != 0.0)
             .unwrap()
@@ -1074,7 +1147,7 @@ fn the_box_is_half_open_and_the_skin_test_strict() {
         let (mut scene, (dt, mass)) = exact_motion(0.5, 0.0);
         let input = input(&law, (Vec3::ZERO, dt, mass), Integrator::SymplecticEuler);
         scene.run(&input, steps, |_, _| {}).unwrap();
-        scene.list_builds
+        scene.list_builds()
     };
     assert_eq!((builds(65), builds(66)), (1, 2));
 }
@@ -1083,7 +1156,7 @@ fn the_box_is_half_open_and_the_skin_test_strict() {
 fn threads_keep_every_spheres_wall_history() {
     // A monolayer sliding on the floor: every sphere, in every thread's stretch, has a stored
     // wall spring, and two threads must give the serial bits.
-    let law = law();
+    let law = table();
     let (side, spacing) = (32, 1.2 * DIAMETER);
     let width = side as f64 * spacing;
     let domain = Domain {
@@ -1108,8 +1181,8 @@ fn threads_keep_every_spheres_wall_history() {
     }
     // Two walls (a ceiling nobody reaches), so each sphere owns two wall states.
     let walls = [
-        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
-        Wall::new(Vec3::new(0.0, 0.0, 3e-3), Vec3::new(0.0, 0.0, -1.0)).unwrap(),
+        wall(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)),
+        wall(Vec3::new(0.0, 0.0, 3e-3), Vec3::new(0.0, 0.0, -1.0)),
     ];
     let m = spheres[0].mass;
     let input = input(
@@ -1129,7 +1202,7 @@ fn threads_keep_every_spheres_wall_history() {
                 .run_on(&input, 200, &Threads::new(n).unwrap(), record)
                 .unwrap(),
         }
-        (motion_bits(&scene.spheres), on_floor)
+        (motion_bits(&scene.spheres()), on_floor)
     };
     let (serial, on_floor) = run(None);
     assert_eq!(on_floor, side * side, "every sphere touches the floor");
@@ -1137,8 +1210,8 @@ fn threads_keep_every_spheres_wall_history() {
 }
 
 #[test]
-fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
-    let law = law();
+fn a_threaded_step_over_caller_buffers_gives_the_bits_of_one_thread() {
+    let law = table();
     let mass = oblique_pair()[0].mass;
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     let pool = Threads::new(2).unwrap();
@@ -1146,11 +1219,12 @@ fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
     VecBuffers::<4>::new(3, 4, 0).run(&input, &mut serial, 80);
     let mut threaded = trio((0, 1.0));
     let mut b = VecBuffers::<4>::new(3, 4, 0);
+    let (materials, buffers) = b.buffers();
     let mut scene = Scene::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut threaded,
-        b.buffers(),
+        (&mut threaded, materials),
+        buffers,
         NoWalls,
     )
     .unwrap();
@@ -1166,7 +1240,8 @@ fn threads_without_a_result_buffer_run_the_pairs_serially_to_the_same_bits() {
 fn each_sphere_keeps_its_own_spring_on_each_wall() {
     // Three spheres sliding slowly on the floor, the middle one also against a side wall: the
     // scene against the contact law applied to each sphere and wall with its own stored state.
-    let law = law();
+    let law = table();
+    let plain_law = self::law();
     let r = DIAMETER / 2.0;
     let sink = 2e-8;
     let mut spheres: Vec<Sphere<f64>> = (0..3)
@@ -1181,12 +1256,11 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
         })
         .collect();
     let walls = [
-        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
-        Wall::new(
+        wall(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)),
+        wall(
             Vec3::new(0.0, 3e-3 + r - sink, 0.0),
             Vec3::new(0.0, -1.0, 0.0),
-        )
-        .unwrap(),
+        ),
     ];
     // The side wall touches every sphere: move the outer two away from it in y.
     spheres[0].position.y -= 1e-4;
@@ -1208,7 +1282,8 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
         for (s, sphere) in direct.iter_mut().enumerate() {
             let (mut force, mut torque) = (Vec3::ZERO, Vec3::ZERO);
             for (k, wall) in walls.iter().enumerate() {
-                let contact = law.sphere_wall(sphere, wall, &mut states[s][k], input.time_step);
+                let contact =
+                    plain_law.sphere_wall(sphere, &wall.wall, &mut states[s][k], input.time_step);
                 if let Interaction::Touching(c) = contact.unwrap() {
                     force += c.force_on_i();
                     torque += c.torque_on_i;
@@ -1232,12 +1307,13 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
         .map(|s| CheckedSphere::new(s).unwrap())
         .collect();
     // Three spheres, two walls: six wall states.
-    let mut b = VecBuffers::<4>::new(3, 8, 6);
+    let mut b = VecBuffers::<4>::new(3, 8, 2);
+    let (materials, buffers) = b.buffers();
     let mut scene = Scene::<Law, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
-        &mut checked,
-        b.buffers(),
+        (&mut checked, materials),
+        buffers,
         walls,
     )
     .unwrap();
@@ -1263,7 +1339,12 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         LinearSpringDashpot::new(1.0e6, 0.9).unwrap(),
         ModelAA(TangentialParameters::new(2.857e5, 0.5, 0.5).unwrap()),
     );
-    let floor = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()];
+    // Spheres of material 0, the floor of material 1.
+    let table = pair_and_wall(pair_law, wall_law);
+    let floor = [wall_of(
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        1,
+    )];
     let gravity = Vec3::new(0.0, 0.0, -9.81);
     let (spheres, domain) = gas(60, 5);
     let m = Sphere::solid(Vec3::ZERO, DIAMETER / 2.0, 2500.0).mass;
@@ -1271,9 +1352,9 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         .time_step(0.5 * pair_law.critical_time_step(m / 2.0), m / 2.0)
         .unwrap();
     // Kinetic plus gravitational energy.
-    let energy = |scene: &OwnedScene<Law, [Wall<f64>; 1]>| {
+    let energy = |scene: &OwnedScene<Law, [MaterialWall<f64>; 1]>| {
         let height: f64 = scene
-            .spheres
+            .spheres()
             .iter()
             .map(|s| s.mass * 9.81 * s.position.z)
             .sum();
@@ -1286,8 +1367,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
             checked_for_pairs
         };
         let input = StepInput {
-            law: &pair_law,
-            wall_law: &wall_law,
+            table: &table,
             gravity,
             time_step,
             integrator: Integrator::SymplecticEuler,
@@ -1308,9 +1388,16 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
                 "{outcome:?}: {start} J -> {end} J"
             );
         } else {
-            assert_eq!(
-                outcome,
-                Err(StepError::Contact(ContactError::PastStableStep))
+            assert!(
+                matches!(
+                    outcome,
+                    Err(StepError::Wall {
+                        wall: 0,
+                        error: ContactError::PastStableStep,
+                        ..
+                    })
+                ),
+                "{outcome:?}"
             );
             assert_eq!(walls_touched, 0, "refused at the first floor contact");
             assert!(energy(&scene) < start * (1.0 + 1e-6), "no energy appeared");
@@ -1319,17 +1406,56 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
     // A step checked against one sphere's mass, for pairs of two: refused at the first
     // touching pair (the gas has overlapping neighbours from its first step).
     let input = StepInput {
-        law: &pair_law,
-        wall_law: &pair_law,
+        table: &table,
         gravity,
         time_step: pair_law
             .time_step(0.99 * pair_law.critical_time_step(m), m)
             .unwrap(),
         integrator: Integrator::SymplecticEuler,
     };
+    let mut scene =
+        OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+    let outcome = scene.run(&input, 2_000, |_, _| {});
+    assert!(
+        matches!(
+            outcome,
+            Err(StepError::Pair {
+                error: ContactError::PastStableStep,
+                ..
+            })
+        ),
+        "{outcome:?}"
+    );
+    // The scene's own check of the step, from the spheres and walls present, refuses both
+    // before a step is taken: the floor's law at a sphere's mass, then (with the floor's law
+    // relaxed) the pairs' law at half a sphere's mass.
     let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
-    assert_eq!(
-        scene.run(&input, 2_000, |_, _| {}),
-        Err(StepError::Contact(ContactError::PastStableStep))
+    let checked = |scene: &mut OwnedScene<Law, _>, table: &MaterialTable<Law, 2>, dt| {
+        scene.scene(|s| s.time_step(table, dt)).unwrap()
+    };
+    let refused = checked(&mut scene, &table, checked_for_pairs.seconds());
+    assert!(
+        matches!(
+            refused,
+            Err(StepError::TimeStep {
+                materials: [0, 1],
+                ..
+            })
+        ),
+        "{refused:?}"
+    );
+    let same = pair_and_wall(pair_law, pair_law);
+    let pair_limit = pair_law.critical_time_step(m / 2.0);
+    assert!(checked(&mut scene, &same, 0.99 * pair_limit).is_ok());
+    let refused = checked(&mut scene, &same, 1.01 * pair_limit);
+    assert!(
+        matches!(
+            refused,
+            Err(StepError::TimeStep {
+                materials: [0, 0],
+                ..
+            })
+        ),
+        "{refused:?}"
     );
 }

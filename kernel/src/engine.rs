@@ -81,6 +81,14 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// See [`ContactLaw::contact_duration`](crate::ContactLaw::contact_duration).
     fn contact_duration(&self, effective_mass: Self::Float) -> Self::Float;
 
+    /// See [`ContactLaw::stored_energy`](crate::ContactLaw::stored_energy).
+    fn stored_energy(
+        &self,
+        overlap: Self::Float,
+        effective_radius: Self::Float,
+        state: &Self::State,
+    ) -> Self::Float;
+
     /// The law bound to a checked time step; see [`ContactLaw::at`](crate::ContactLaw::at).
     fn at(&self, time_step: TimeStep<Self::Float>) -> BoundLaw<'_, Self> {
         BoundLaw::new(self, time_step)

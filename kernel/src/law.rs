@@ -283,6 +283,17 @@ where
         self.stable_phase
     }
 
+    /// The elastic energy a touching contact holds (J): its normal spring at `overlap` for
+    /// effective radius `R*` (a sphere's own radius against a wall), plus the tangential and
+    /// rolling springs of `state` (the state after the step that gave `overlap`). Dashpots and
+    /// sliders hold none. See [`NormalModel::elastic_energy`] and
+    /// [`TangentialModel::stored_energy`].
+    pub fn stored_energy(&self, overlap: F, effective_radius: F, state: &Ro::State<T::State>) -> F {
+        self.normal.elastic_energy(overlap, effective_radius)
+            + self.tangential.stored_energy(Ro::tangential(state))
+            + self.rolling.stored_energy(state)
+    }
+
     /// What the normal law derives for a pair of this effective mass (reference backend): a
     /// linear law's oscillator; see [`NormalModel::oscillator`].
     pub fn oscillator(&self, effective_mass: F) -> NormalOscillator<F> {
@@ -613,6 +624,10 @@ where
 
     fn contact_duration(&self, effective_mass: F) -> F {
         ContactLaw::contact_duration(self, effective_mass)
+    }
+
+    fn stored_energy(&self, overlap: F, effective_radius: F, state: &Self::State) -> F {
+        ContactLaw::stored_energy(self, overlap, effective_radius, state)
     }
 
     #[inline(always)]

@@ -191,6 +191,7 @@ pub mod motion;
 mod normal;
 pub mod rolling;
 mod rotation;
+mod spheres;
 mod store;
 mod table;
 pub mod tangential;
@@ -209,7 +210,6 @@ pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
 pub use list::{
     Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall, Route,
-    SphereArrays,
 };
 pub use material::Material;
 pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
@@ -219,6 +219,7 @@ pub use normal::{
 };
 pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
+pub use spheres::{SphereArrays, SphereSlice, Spheres};
 pub use store::{ContactHistory, ContactKey};
 pub use table::{MaterialTable, TableError};
 pub use tangential::{

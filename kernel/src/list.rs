@@ -11,12 +11,13 @@
 
 use crate::batch::{ContactBlock, LANES, PairBlock};
 use crate::body::{Sphere, Wall, effective_mass};
-use crate::checked::{self, CheckedSphere};
+use crate::checked::CheckedSphere;
 use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::Float;
 use crate::geometry::Separation;
 use crate::law::{ContactForces, Interaction};
+use crate::spheres::Spheres;
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
@@ -37,48 +38,6 @@ pub enum Route {
     OneAtATime,
 }
 
-/// The engine's spheres, as its own arrays: sphere `k` is entry `k` of each. Every array must
-/// be as long as `position`.
-#[derive(Clone, Copy, Debug)]
-pub struct SphereArrays<'a, F> {
-    /// Centre positions (m).
-    pub position: &'a [Vec3<F>],
-    /// Centre velocities (m/s).
-    pub velocity: &'a [Vec3<F>],
-    /// Angular velocities (rad/s).
-    pub angular_velocity: &'a [Vec3<F>],
-    /// Radii (m).
-    pub radius: &'a [F],
-    /// Masses (kg).
-    pub mass: &'a [F],
-    /// Material ids, rows of the [`MaterialTable`].
-    pub material: &'a [u32],
-}
-
-impl<F: Float> SphereArrays<'_, F> {
-    /// How many spheres.
-    pub fn len(&self) -> usize {
-        self.position.len()
-    }
-
-    /// Whether there are none.
-    pub fn is_empty(&self) -> bool {
-        self.position.is_empty()
-    }
-
-    /// Sphere `k`, which must be below [`SphereArrays::len`] and the arrays checked.
-    #[inline(always)]
-    fn sphere(&self, k: usize) -> Sphere<F> {
-        Sphere {
-            position: self.position[k],
-            velocity: self.velocity[k],
-            angular_velocity: self.angular_velocity[k],
-            radius: self.radius[k],
-            mass: self.mass[k],
-        }
-    }
-}
-
 /// A plane wall made of a material of the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MaterialWall<F> {
@@ -91,8 +50,11 @@ pub struct MaterialWall<F> {
 /// The contacts of one evaluation and their per-contact states, owned by the engine.
 #[derive(Debug)]
 pub struct ContactList<'a, F, S> {
-    /// Sphere-sphere pairs, as indices into the [`SphereArrays`]; `i` is body i.
+    /// Sphere-sphere pairs, as indices into the spheres; `i` is body i.
     pub pairs: &'a [[u32; 2]],
+    /// Empty, or one per pair: added to sphere `j`'s position for that pair (a periodic image,
+    /// as a cell list finds it); the forces still go to sphere `j`.
+    pub shifts: &'a [Vec3<F>],
     /// One state per pair, kept beside the pairs from step to step.
     pub pair_states: &'a mut [S],
     /// The walls.
@@ -166,6 +128,8 @@ pub enum ListArray {
     Mass,
     /// [`SphereArrays::material`].
     Material,
+    /// [`ContactList::shifts`] (none, or one per pair).
+    Shifts,
     /// [`ContactList::pair_states`] (one per pair).
     PairStates,
     /// [`ContactList::wall_states`] (one per sphere and wall).
@@ -214,6 +178,11 @@ pub enum ListError {
         /// The pair's place in the list.
         pair: usize,
     },
+    /// Pair `pair`'s shift is not finite.
+    Shift {
+        /// The pair's place in the list.
+        pair: usize,
+    },
     /// The contact of pair `pair` was refused (coincident centres, an overflow, past the
     /// stable step).
     Pair {
@@ -253,6 +222,7 @@ impl core::fmt::Display for ListError {
             }
             Self::Sphere { sphere, error } => write!(f, "sphere {sphere}: {error}"),
             Self::PairIndex { pair } => write!(f, "pair {pair} names a sphere past the arrays"),
+            Self::Shift { pair } => write!(f, "pair {pair}'s shift is not finite"),
             Self::Pair { pair, error } => write!(f, "pair {pair}: {error}"),
             Self::Wall {
                 sphere,
@@ -270,42 +240,26 @@ impl core::fmt::Display for ListError {
 
 impl core::error::Error for ListError {}
 
-/// Checks the sphere arrays: lengths, material ids, every sphere (in that order, the first
-/// failure winning). Returns the lightest sphere's mass of each material present.
+/// Checks the spheres: lengths, material ids, every sphere (in that order, the first failure
+/// winning). Returns the lightest sphere's mass of each material present.
 fn check_spheres<F: Float, const M: usize>(
-    spheres: &SphereArrays<'_, F>,
+    spheres: &impl Spheres<F>,
 ) -> Result<[Option<F>; M], ListError> {
-    let n = spheres.len();
-    let lengths = [
-        (spheres.velocity.len(), ListArray::Velocity),
-        (spheres.angular_velocity.len(), ListArray::AngularVelocity),
-        (spheres.radius.len(), ListArray::Radius),
-        (spheres.mass.len(), ListArray::Mass),
-        (spheres.material.len(), ListArray::Material),
-    ];
-    check_lengths(n, &lengths)?;
+    spheres.check_lengths()?;
     let mut lightest = [None; M];
-    for k in 0..n {
-        let material = spheres.material[k];
+    for k in 0..spheres.len() {
+        let material = spheres.material(k);
         let Some(slot) = lightest.get_mut(material as usize) else {
             return Err(ListError::Material {
                 sphere: k,
                 material,
             });
         };
-        let sphere = spheres.sphere(k);
-        checked::check(&sphere).map_err(|error| ListError::Sphere { sphere: k, error })?;
-        let mass = sphere.mass;
+        spheres.check(k)?;
+        let mass = spheres.sphere(k).mass;
         *slot = Some(slot.map_or(mass, |m: F| m.min_of(mass)));
     }
     Ok(lightest)
-}
-
-fn check_lengths(expected: usize, lengths: &[(usize, ListArray)]) -> Result<(), ListError> {
-    match lengths.iter().find(|(length, _)| *length != expected) {
-        Some(&(_, array)) => Err(ListError::Length(array)),
-        None => Ok(()),
-    }
 }
 
 fn check_walls<F, const M: usize>(walls: &[MaterialWall<F>]) -> Result<(), ListError> {
@@ -335,7 +289,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     pub fn time_step(
         &self,
         seconds: L::Float,
-        spheres: &SphereArrays<'_, L::Float>,
+        spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<TimeStep<L::Float>, ListError> {
         let lightest = check_spheres::<_, M>(spheres)?;
@@ -374,7 +328,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     /// As [`MaterialTable::time_step`] for bad arrays.
     pub fn recommended_time_step(
         &self,
-        spheres: &SphereArrays<'_, L::Float>,
+        spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<Option<L::Float>, ListError> {
         let lightest = check_spheres::<_, M>(spheres)?;
@@ -430,7 +384,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     ///
     /// let mut pair_states = [Default::default(); 2];
     /// let list = ContactList {
-    ///     pairs: &[[0, 1], [1, 2]], pair_states: &mut pair_states, walls: &[], wall_states: &mut [],
+    ///     pairs: &[[0, 1], [1, 2]], shifts: &[], pair_states: &mut pair_states,
+    ///     walls: &[], wall_states: &mut [],
     /// };
     /// let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
     /// let (mut saved_states, mut saved_loads) = ([Default::default(); 2], [Vec3::ZERO; 6]);
@@ -456,7 +411,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     pub fn evaluate(
         &self,
         time_step: TimeStep<L::Float>,
-        spheres: &SphereArrays<'_, L::Float>,
+        spheres: &impl Spheres<L::Float>,
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
@@ -472,7 +427,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         &self,
         route: Route,
         time_step: TimeStep<L::Float>,
-        spheres: &SphereArrays<'_, L::Float>,
+        spheres: &impl Spheres<L::Float>,
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
@@ -481,11 +436,16 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             Route::Blocks => true,
         };
         let n = spheres.len();
-        let (pairs, walls) = (list.pairs, list.walls);
+        let (pairs, shifts, walls) = (list.pairs, list.shifts, list.walls);
         let contacts =
             ListOutput::<L::Float, L::State>::records_needed(pairs.len(), n, walls.len());
         let records = out.records.as_ref().map_or(contacts, |r| r.len());
         let lengths = [
+            (
+                shifts.len(),
+                if shifts.is_empty() { 0 } else { pairs.len() },
+                ListArray::Shifts,
+            ),
             (list.pair_states.len(), pairs.len(), ListArray::PairStates),
             (
                 list.wall_states.len(),
@@ -509,6 +469,9 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         {
             return Err(ListError::PairIndex { pair });
         }
+        if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
+            return Err(ListError::Shift { pair });
+        }
         let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
         saved_pairs.copy_from_slice(list.pair_states);
         saved_walls.copy_from_slice(list.wall_states);
@@ -526,7 +489,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
         let outcome = evaluate_pairs(
             spheres,
-            (pairs, &mut *list.pair_states),
+            (pairs, shifts, &mut *list.pair_states),
             &mut bound,
             &mut sink,
             blocks,
@@ -597,6 +560,21 @@ impl<F: Float> Sink<'_, F> {
     }
 }
 
+/// Pair `k`'s shift of its sphere `j` (none when the list has no shifts).
+#[inline(always)]
+fn shift<F: Float>(shifts: &[Vec3<F>], k: usize) -> Vec3<F> {
+    shifts.get(k).copied().unwrap_or(Vec3::ZERO)
+}
+
+/// `sphere` moved by `shift`.
+#[inline(always)]
+fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
+    Sphere {
+        position: sphere.position + shift,
+        ..sphere
+    }
+}
+
 /// Candidate pairs sifted for contact at a time.
 const SIFT: usize = 256;
 
@@ -607,8 +585,8 @@ const GROUP: usize = 8;
 /// Every pair, chunk by chunk: sifted, evaluated (in blocks or one at a time), and committed in
 /// list order. Stops at the first chunk with a refused pair, naming the first in list order.
 fn evaluate_pairs<L: Law, const M: usize>(
-    spheres: &SphereArrays<'_, L::Float>,
-    (pairs, states): (&[[u32; 2]], &mut [L::State]),
+    spheres: &impl Spheres<L::Float>,
+    (pairs, shifts, states): (&[[u32; 2]], &[Vec3<L::Float>], &mut [L::State]),
     bound: &mut [[BoundLaw<'_, L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
     blocks: bool,
@@ -616,11 +594,12 @@ fn evaluate_pairs<L: Law, const M: usize>(
     let mut staged = Staged::<L::Float, L::State>::new();
     for (c, (chunk, states)) in pairs.chunks(SIFT).zip(states.chunks_mut(SIFT)).enumerate() {
         let first = c * SIFT;
-        let found = staged.sift(spheres, chunk, states);
+        let shifts = shifts.get(first..first + chunk.len()).unwrap_or(&[]);
+        let found = staged.sift(spheres, (chunk, shifts), states);
         let failed = if blocks {
-            staged.in_blocks(spheres, chunk, states, found, bound)
+            staged.in_blocks(spheres, (chunk, shifts), states, found, bound)
         } else {
-            staged.one_at_a_time(spheres, chunk, states, found, bound)
+            staged.one_at_a_time(spheres, (chunk, shifts), states, found, bound)
         };
         if let Some((k, error)) = failed {
             return Err(ListError::Pair {
@@ -646,7 +625,7 @@ fn evaluate_pairs<L: Law, const M: usize>(
 
 /// Every sphere against every wall, one at a time, committed as they go.
 fn evaluate_walls<L: Law, const M: usize>(
-    spheres: &SphereArrays<'_, L::Float>,
+    spheres: &impl Spheres<L::Float>,
     (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
     bound: &mut [[BoundLaw<'_, L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
@@ -657,7 +636,7 @@ fn evaluate_walls<L: Law, const M: usize>(
     }
     for (k, states) in states.chunks_mut(walls.len()).enumerate() {
         let body = CheckedSphere::trusted(spheres.sphere(k));
-        let material = spheres.material[k] as usize;
+        let material = spheres.material(k) as usize;
         for (w, (wall, state)) in walls.iter().zip(states).enumerate() {
             let law = &mut bound[material][wall.material as usize];
             let place = first + k * walls.len() + w;
@@ -709,16 +688,16 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     #[inline(always)]
     fn sift(
         &mut self,
-        spheres: &SphereArrays<'_, F>,
-        chunk: &[[u32; 2]],
+        spheres: &impl Spheres<F>,
+        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         states: &mut [S],
     ) -> usize {
         let mut found = 0;
         for (k, (&[i, j], state)) in chunk.iter().zip(states.iter_mut()).enumerate() {
             let (i, j) = (i as usize, j as usize);
             let separation = Separation::between(
-                (spheres.position[i], spheres.radius[i]),
-                (spheres.position[j], spheres.radius[j]),
+                (spheres.position(i), spheres.radius(i)),
+                (spheres.position(j) + shift(shifts, k), spheres.radius(j)),
             );
             let evaluate = separation.needs_evaluation();
             if size_of::<S>() > 0 && !evaluate {
@@ -734,8 +713,8 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     #[inline(always)]
     fn one_at_a_time<L: Law<Float = F, State = S>, const M: usize>(
         &mut self,
-        spheres: &SphereArrays<'_, F>,
-        chunk: &[[u32; 2]],
+        spheres: &impl Spheres<F>,
+        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         states: &mut [S],
         found: usize,
         bound: &mut [[BoundLaw<'_, L>; M]; M],
@@ -743,10 +722,10 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         for &k in &self.touching[..found] {
             let k = usize::from(k);
             let [i, j] = chunk[k].map(|x| x as usize);
-            let law = &mut bound[spheres.material[i] as usize][spheres.material[j] as usize];
+            let law = &mut bound[spheres.material(i) as usize][spheres.material(j) as usize];
             let (a, b) = (
                 CheckedSphere::trusted(spheres.sphere(i)),
-                CheckedSphere::trusted(spheres.sphere(j)),
+                CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
             );
             match law.sphere_sphere(&a, &b, &mut states[k]) {
                 Ok(Interaction::Touching(forces)) => {
@@ -766,13 +745,13 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     #[inline(always)]
     fn in_blocks<L: Law<Float = F, State = S>, const M: usize>(
         &mut self,
-        spheres: &SphereArrays<'_, F>,
-        chunk: &[[u32; 2]],
+        spheres: &impl Spheres<F>,
+        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         states: &mut [S],
         found: usize,
         bound: &mut [[BoundLaw<'_, L>; M]; M],
     ) -> Option<(usize, ContactError)> {
-        let material = |k: usize| spheres.material[k] as usize;
+        let material = |k: usize| spheres.material(k) as usize;
         let key = |k: usize| {
             let [i, j] = chunk[k].map(|x| material(x as usize));
             (i.min(j), i.max(j))
@@ -809,9 +788,11 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                         for (lane, state) in block_states.iter_mut().enumerate() {
                             match lanes.get(lane) {
                                 Some(&k) => {
-                                    let [i, j] = chunk[usize::from(k)].map(|x| x as usize);
-                                    block.set(lane, &spheres.sphere(i), &spheres.sphere(j));
-                                    *state = states[usize::from(k)];
+                                    let k = usize::from(k);
+                                    let [i, j] = chunk[k].map(|x| x as usize);
+                                    let j_at = shifted(spheres.sphere(j), shift(shifts, k));
+                                    block.set(lane, &spheres.sphere(i), &j_at);
+                                    *state = states[k];
                                 }
                                 // An unused lane: spheres of no size, refused and ignored.
                                 None => block.set(lane, &Sphere::default(), &Sphere::default()),

@@ -69,6 +69,13 @@ pub trait RollingModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// Largest stable explicit time step of the rolling mode; infinite when the law adds no
     /// stiffness or damping.
     fn critical_time_step(&self) -> F;
+
+    /// The elastic energy of the rolling spring in `state` (J): `|M_k|^2 / (2 k_r)`, zero for
+    /// a slot without one.
+    fn stored_energy<S: ContactState>(&self, state: &Self::State<S>) -> F {
+        let _ = state;
+        F::ZERO
+    }
 }
 
 /// No rolling resistance: a zero-sized slot with no state and no work.
@@ -251,6 +258,10 @@ impl<F: Float> RollingModel<F> for ElasticPlasticRolling<F> {
                 torque: kept,
             },
         )
+    }
+
+    fn stored_energy<S: ContactState>(&self, state: &RollingSpring<S, F>) -> F {
+        state.torque.norm_squared() / (F::TWO * self.stiffness)
     }
 
     /// The rolling oscillator `k_r` on the smallest inertia, with its dashpot.

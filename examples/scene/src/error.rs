@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use soft_sphere::ContactError;
+use soft_sphere::{ContactError, ListError, ParameterError};
 
 /// Why a scene could not be set up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,6 +16,8 @@ pub enum SceneError {
     /// A stored pair state in the list belongs to a pair whose spheres are not this scene's
     /// (the buffers were not fresh, or come from another scene).
     History,
+    /// The material ids are not one per sphere.
+    Materials,
     /// Sphere `index` is not valid (`error` says why: a non-finite field, a radius or mass that
     /// is not positive); what [`check_spheres`](crate::check_spheres) reports.
     Sphere {
@@ -38,6 +40,7 @@ impl fmt::Display for SceneError {
             Self::History => f.write_str(
                 "a stored pair state belongs to spheres that are not this scene's (use fresh buffers)",
             ),
+            Self::Materials => f.write_str("the material ids are not one per sphere"),
             Self::Sphere { index, error } => write!(f, "sphere {index} is invalid: {error}"),
         }
     }
@@ -47,10 +50,47 @@ impl core::error::Error for SceneError {}
 
 /// Why a step failed. The contact history is then as it was before the step (see
 /// [`Scene::step_on`](crate::Scene::step_on) for the spheres).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepError {
-    /// A contact evaluation was rejected (coincident centres, an overflowing force).
-    Contact(ContactError),
+    /// The contact of spheres `spheres` was refused (coincident centres, an overflowing force,
+    /// past the step's stability limit).
+    Pair {
+        /// The two spheres, lower index first.
+        spheres: [usize; 2],
+        /// Why.
+        error: ContactError,
+    },
+    /// The contact of sphere `sphere` with wall `wall` was refused.
+    Wall {
+        /// The sphere.
+        sphere: usize,
+        /// The wall.
+        wall: usize,
+        /// Why.
+        error: ContactError,
+    },
+    /// Sphere `sphere`'s material id is not a row of the step's table.
+    Material {
+        /// The sphere.
+        sphere: usize,
+        /// Its id.
+        material: u32,
+    },
+    /// Wall `wall`'s material id is not a row of the step's table.
+    WallMaterial {
+        /// The wall.
+        wall: usize,
+        /// Its id.
+        material: u32,
+    },
+    /// The step is refused by the law of materials `materials` at the smallest effective mass
+    /// the scene's spheres give that pair ([`Scene::time_step`](crate::Scene::time_step)).
+    TimeStep {
+        /// The two material ids (a wall's second).
+        materials: [u32; 2],
+        /// The law's answer.
+        error: ParameterError,
+    },
     /// At a list rebuild, the Verlet list needed more entries than its buffer holds. Nothing is
     /// lost: build the scene again over larger buffers and the same history.
     ListFull,
@@ -65,24 +105,84 @@ pub enum StepError {
     },
     /// An earlier step diverged; the scene does not step again.
     Halted,
+    /// An owned scene's buffers no longer fit its spheres (see
+    /// [`OwnedScene::scene`](crate::OwnedScene)).
+    Scene(SceneError),
+    /// The kernel's list seam refused an array the scene built itself (its lengths, a
+    /// shift, a sphere): a defect of the scene, reported rather than hidden.
+    List(ListError),
 }
 
-impl From<ContactError> for StepError {
-    fn from(error: ContactError) -> Self {
-        Self::Contact(error)
+impl From<SceneError> for StepError {
+    fn from(error: SceneError) -> Self {
+        Self::Scene(error)
+    }
+}
+
+impl StepError {
+    /// The scene's reading of what the kernel's list seam refused: pairs named by their
+    /// spheres.
+    pub(crate) fn from_list(error: ListError, pairs: &[[u32; 2]]) -> Self {
+        let spheres = |pair: usize| pairs.get(pair).map_or([0, 0], |p| p.map(|k| k as usize));
+        match error {
+            ListError::Pair { pair, error } => Self::Pair {
+                spheres: spheres(pair),
+                error,
+            },
+            ListError::Wall {
+                sphere,
+                wall,
+                error,
+            } => Self::Wall {
+                sphere,
+                wall,
+                error,
+            },
+            ListError::Material { sphere, material } => Self::Material { sphere, material },
+            ListError::WallMaterial { wall, material } => Self::WallMaterial { wall, material },
+            ListError::TimeStep { materials, error } => Self::TimeStep { materials, error },
+            other => Self::List(other),
+        }
     }
 }
 
 impl fmt::Display for StepError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::Contact(error) => write!(f, "a contact was rejected: {error}"),
+            Self::Pair { spheres, error } => write!(
+                f,
+                "the contact of spheres {} and {} was refused: {error}",
+                spheres[0], spheres[1]
+            ),
+            Self::Wall {
+                sphere,
+                wall,
+                error,
+            } => write!(
+                f,
+                "the contact of sphere {sphere} with wall {wall} was refused: {error}"
+            ),
+            Self::Material { sphere, material } => write!(
+                f,
+                "sphere {sphere}'s material {material} is not in the material table"
+            ),
+            Self::WallMaterial { wall, material } => write!(
+                f,
+                "wall {wall}'s material {material} is not in the material table"
+            ),
+            Self::TimeStep { materials, error } => write!(
+                f,
+                "the time step is refused for materials {} and {}: {error}",
+                materials[0], materials[1]
+            ),
             Self::ListFull => f.write_str("the Verlet list buffer is too short"),
             Self::ParkingFull => {
                 f.write_str("a sphere owns more touching contacts than its parking holds")
             }
             Self::Diverged { index } => write!(f, "sphere {index} diverged to a non-finite state"),
             Self::Halted => f.write_str("an earlier step diverged; the scene has stopped"),
+            Self::Scene(error) => write!(f, "the scene could not be built: {error}"),
+            Self::List(error) => write!(f, "the scene's own contact list was refused: {error}"),
         }
     }
 }

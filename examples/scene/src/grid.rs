@@ -7,7 +7,6 @@
 
 use soft_sphere::{CheckedSphere, Float, Vec3};
 
-use crate::buffers::ListEntry;
 use crate::error::SceneError;
 
 /// The box the spheres live in. `x` and `y` may be periodic; `z` never is (use walls).
@@ -23,14 +22,9 @@ pub struct Domain<F> {
     pub periodic_y: bool,
 }
 
-/// A pair of spheres within contact distance plus the skin at the last list build; `j` is seen
-/// through the periodic image `image` (multiples of the box lengths in x and y).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Candidate {
-    pub(crate) i: u32,
-    pub(crate) j: u32,
-    pub(crate) image: [i8; 2],
-}
+/// Where a list build writes its pairs (`[i, j]`, `i < j`) and the shift of each pair's `j`
+/// (its periodic image).
+pub(crate) type ListSlots<'l, F> = (&'l mut [[u32; 2]], &'l mut [Vec3<F>]);
 
 /// The cell and half shell of neighbour cells a pair search visits from each cell.
 const HALF_SHELL: [(isize, isize, isize); 14] = [
@@ -99,7 +93,7 @@ impl<F: Float> Grid<F> {
 
     /// The displacement of periodic image `image` (box lengths in x and y).
     #[inline(always)]
-    pub(crate) fn image_shift(&self, image: [i8; 2]) -> Vec3<F> {
+    fn image_shift(&self, image: [i8; 2]) -> Vec3<F> {
         Vec3::new(
             self.lengths[0] * F::from_f64(f64::from(image[0])),
             self.lengths[1] * F::from_f64(f64::from(image[1])),
@@ -176,17 +170,17 @@ impl<F: Float> Grid<F> {
     }
 
     /// Every pair within contact distance plus `skin` into `list`, the lower index first with
-    /// the periodic image of the higher; returns how many. The spheres must have been sorted
+    /// the shift to the periodic image of the higher; returns how many. The spheres must have been sorted
     /// into `start` and `entries` by [`Grid::sort`].
     ///
     /// # Errors
     /// `Err` when `list` is too short.
-    pub(crate) fn pairs<S>(
+    pub(crate) fn pairs(
         &self,
         spheres: &[CheckedSphere<F>],
         (start, entries): (&[u32], &[u32]),
         skin: F,
-        list: &mut [ListEntry<S>],
+        mut list: ListSlots<'_, F>,
     ) -> Result<usize, ()> {
         let [nx, ny, nz] = self.cells;
         let mut count = 0;
@@ -216,7 +210,7 @@ impl<F: Float> Grid<F> {
                             cells,
                             (same_cell, [image_x, image_y]),
                             skin,
-                            (list, count),
+                            (&mut list, count),
                         )?;
                     }
                 }
@@ -225,13 +219,13 @@ impl<F: Float> Grid<F> {
         Ok(count)
     }
 
-    fn cell_pairs<S>(
+    fn cell_pairs(
         &self,
         spheres: &[CheckedSphere<F>],
         (here, there): (&[u32], &[u32]),
         (same_cell, image): (bool, [i8; 2]),
         skin: F,
-        (list, mut count): (&mut [ListEntry<S>], usize),
+        ((pairs, shifts), mut count): (&mut ListSlots<'_, F>, usize),
     ) -> Result<usize, ()> {
         let shift = self.image_shift(image);
         for (at, &a) in here.iter().enumerate() {
@@ -245,17 +239,16 @@ impl<F: Float> Grid<F> {
                 if offset.norm_squared() >= reach * reach {
                     continue;
                 }
-                let entry = list.get_mut(count).ok_or(())?;
+                let (Some(pair), Some(image_shift)) = (pairs.get_mut(count), shifts.get_mut(count))
+                else {
+                    return Err(());
+                };
                 // The lower index owns the pair and is body i, so its stored state keeps its
                 // orientation whichever cell found the pair.
-                entry.candidate = if a < b {
-                    Candidate { i: a, j: b, image }
+                (*pair, *image_shift) = if a < b {
+                    ([a, b], shift)
                 } else {
-                    Candidate {
-                        i: b,
-                        j: a,
-                        image: [-image[0], -image[1]],
-                    }
+                    ([b, a], -shift)
                 };
                 count += 1;
             }

@@ -1,50 +1,72 @@
 //! A many-sphere engine on the soft-sphere kernel, without allocation: a uniform cell grid built
 //! by counting sort into caller-owned buffers, a Verlet list of candidate pairs within the contact
 //! distance plus a skin (rebuilt from the grid only when a sphere has moved half the skin or
-//! crossed a periodic boundary), the stored contact states kept beside the list, walls as a
-//! compile-time slot, and one step of symplectic Euler or velocity Verlet, on one thread or
-//! spread over a caller's [`Executor`] with the same bits.
+//! crossed a periodic boundary), the stored contact states kept beside the list, walls with
+//! materials as a compile-time slot, and one step of symplectic Euler or velocity Verlet; the
+//! integration can be spread over a caller's [`Executor`] with the same bits.
 //!
-//! It reaches the contact laws only through the kernel's public checked path: the spheres are
-//! [`CheckedSphere`]s (checked when the caller makes them, and by the scene after every step), the
-//! law is any [`Law`] bound to its step with [`Law::at`], which derives each pair of masses'
-//! normal oscillator once. Contacts are owned by the lower sphere index and evaluated in list
-//! order, so the stored state and the forces are the same bits for the same inputs.
+//! It reaches the contact laws only through the kernel's list seam
+//! ([`MaterialTable::evaluate`](soft_sphere::MaterialTable::evaluate)): each step hands it the
+//! whole Verlet list (pairs, periodic shifts, states) and the walls over the scene's
+//! [`CheckedSphere`]s and their material ids, and the seam picks each contact's law from the
+//! table, checks it against the step, and adds the forces in list order. Contacts are owned by
+//! the lower sphere index, so the stored state and the forces are the same bits for the same
+//! inputs.
 //!
 //! Guarantees (tested in `host-tests/tests/scene.rs`):
 //! - every touching pair is found, across periodic boundaries (against a brute-force search);
 //! - stored springs survive list rebuilds, the same bits as the law applied to the pair directly;
 //! - the same bits for any number of threads, and run to run;
-//! - buffers of the wrong length (for the spheres, the cells, the walls' type) and stored states
-//!   of pairs that are not the scene's are refused when the scene is built
-//!   ([`SceneError::BufferLength`], [`SceneError::History`]); a failed step leaves the history
-//!   as it was (with symplectic Euler, the whole scene); a step whose integration diverges is
-//!   reported and the scene refuses to go on.
+//! - the step is checked against every pair of materials the spheres present
+//!   ([`Scene::time_step`]), and every contact against it at every step;
+//! - with a records buffer, each step's touching contacts can be read ([`Scene::contacts`]) and
+//!   the step's statistics carry an energy account ([`Energy`]) whose balance stays constant
+//!   to the integrator's error;
+//! - buffers of the wrong length and stored states of pairs that are not the scene's are
+//!   refused when the scene is built ([`SceneError::BufferLength`], [`SceneError::History`]); a
+//!   failed step leaves the history as it was (with symplectic Euler, the whole scene); a step
+//!   whose integration diverges is reported and the scene refuses to go on.
+//!
+//! With the `alloc` feature, [`OwnedScene`] owns its buffers: a std user writes no buffer code.
 
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
 mod buffers;
+mod energy;
 mod error;
 mod grid;
+#[cfg(feature = "alloc")]
+mod owned;
 mod parallel;
 mod parking;
 mod step;
+mod view;
 mod walls;
 
-pub use buffers::{BufferSizes, ListEntry, PairResult, SceneBuffers, SphereEntry, WallEntry};
+pub use buffers::{BufferSizes, SceneBuffers};
+pub use energy::Energy;
 pub use error::{SceneError, StepError};
 pub use grid::Domain;
+#[cfg(feature = "alloc")]
+pub use owned::{OwnedScene, PAIRS_PER_SPHERE, PARKING};
 pub use parallel::{Executor, Serial};
 pub use parking::Parking;
+pub use view::{ContactBodies, ContactView};
 pub use walls::{NoWalls, WallSet};
 
 use core::marker::PhantomData;
 
-use soft_sphere::{CheckedSphere, Float, Law, TimeStep, Vec3};
+use soft_sphere::{
+    CheckedSphere, Float, Interaction, Law, MaterialTable, SphereSlice, TimeStep, Vec3,
+};
 
-use grid::{Candidate, Grid};
+use energy::Ledger;
+use grid::Grid;
 
 /// Where the history update sits in a step: see the kernel's `motion` module.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -76,54 +98,65 @@ pub type Load<F> = (Vec3<F>, Vec3<F>);
 pub struct StepStats<F> {
     /// Sphere-sphere contacts touching.
     pub pair_contacts: usize,
-    /// Sphere-sphere contacts at the Coulomb limit.
+    /// Contacts (pairs and walls) at the Coulomb limit.
     pub sliding_contacts: usize,
     /// Sphere-wall contacts touching.
     pub wall_contacts: usize,
+    /// Contacts past the step's stability limit that a step made with
+    /// [`TimeStep::tolerating_unstable_contacts`] let through (otherwise they stop the step).
+    pub unstable_contacts: usize,
     /// Sum of the sphere-sphere overlaps (m).
     pub overlap_sum: F,
+    /// The energy account at the end of the step, when the scene keeps records
+    /// ([`SceneBuffers::records`]).
+    pub energy: Option<Energy<F>>,
 }
 
 /// One step's fixed inputs.
 #[derive(Debug)]
-pub struct StepInput<'l, L: Law> {
-    /// The contact law of sphere-sphere contacts.
-    pub law: &'l L,
-    /// The contact law of sphere-wall contacts (often the same law; a different restitution
-    /// gives the walls the same dashpot as a pair, whose effective mass is smaller).
-    pub wall_law: &'l L,
+pub struct StepInput<'l, L: Law, const M: usize> {
+    /// The law of every pair of materials (walls' materials included).
+    pub table: &'l MaterialTable<L, M>,
     /// Gravitational acceleration (m/s^2).
     pub gravity: Vec3<L::Float>,
-    /// The checked step.
+    /// The checked step: [`Scene::time_step`] checks it against the spheres present.
     pub time_step: TimeStep<L::Float>,
     /// The integrator.
     pub integrator: Integrator,
 }
 
-/// A scene of spheres under law `L`, with walls `W` and at most `K` stored contacts per sphere
-/// at a list rebuild, over caller-owned buffers ([`SceneBuffers`], sized by
+/// A scene of spheres under laws `L`, with walls `W` and at most `K` stored contacts per
+/// sphere at a list rebuild, over caller-owned buffers ([`SceneBuffers`], sized by
 /// [`Scene::buffer_sizes`]).
 #[derive(Debug)]
 pub struct Scene<'a, L: Law, W, const K: usize> {
     spheres: &'a mut [CheckedSphere<L::Float>],
-    entries: &'a mut [SphereEntry<L::Float>],
+    materials: &'a [u32],
     cell_start: &'a mut [u32],
     cell_entries: &'a mut [u32],
-    list: &'a mut [ListEntry<L::State>],
+    pairs: &'a mut [[u32; 2]],
+    shifts: &'a mut [Vec3<L::Float>],
+    force: &'a mut [Vec3<L::Float>],
+    torque: &'a mut [Vec3<L::Float>],
+    anchor: &'a mut [Vec3<L::Float>],
+    saved_loads: &'a mut [Vec3<L::Float>],
+    pair_states: &'a mut [L::State],
+    wall_states: &'a mut [L::State],
+    saved_states: &'a mut [L::State],
     parking: &'a mut [Parking<L::State, K>],
-    wall_states: &'a mut [WallEntry<L::State>],
-    pair_results: &'a mut [PairResult<L::Float>],
+    records: &'a mut [Interaction<L::Float>],
     walls: W,
     candidate_count: usize,
     grid: Grid<L::Float>,
     skin: L::Float,
     list_current: bool,
     list_builds: usize,
+    /// The records hold the outcome of the list's pairs at the last evaluation.
+    records_current: bool,
     forces_current: bool,
     /// A step's integration diverged: every later step refuses to run.
     halted: bool,
-    /// Which of each entry's two states is live (each committed step flips it).
-    live: usize,
+    ledger: Ledger<L::Float>,
     law: PhantomData<fn() -> L>,
 }
 
@@ -151,30 +184,15 @@ pub fn check_spheres<F: Float>(
     })
 }
 
-/// True when the law keeps a per-contact state: a stateless law's scene reads and writes none.
+/// True when the law keeps a per-contact state: a stateless law's scene parks none.
 const fn stores<S>() -> bool {
     size_of::<S>() > 0
 }
 
-/// Hands the history back in the first of each entry's two states, so that a scene built over
-/// the same buffers later goes on from it.
-impl<L: Law, W, const K: usize> Drop for Scene<'_, L, W, K> {
-    fn drop(&mut self) {
-        if self.live == 1 {
-            for entry in self.list.iter_mut() {
-                entry.states[0] = entry.states[1];
-            }
-            for entry in self.wall_states.iter_mut() {
-                entry.states[0] = entry.states[1];
-            }
-        }
-    }
-}
-
 impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// The buffer lengths of a scene of `spheres` spheres in `domain` whose Verlet list holds
-    /// up to `list_capacity` pairs, with room for a step spread over threads when `parallel`.
-    /// Grid cells are at least `largest_diameter + skin` on a side.
+    /// up to `list_capacity` pairs, keeping each contact's outcome when `records`. Grid cells
+    /// are at least `largest_diameter + skin` on a side.
     ///
     /// # Errors
     /// [`SceneError::Domain`] for a bad domain or cell size.
@@ -183,31 +201,33 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         (largest_diameter, skin): (L::Float, L::Float),
         spheres: usize,
         list_capacity: usize,
-        parallel: bool,
+        records: bool,
     ) -> Result<BufferSizes, SceneError> {
         let cells = Grid::new(*domain, largest_diameter + skin)?.total();
-        let stateful = if stores::<L::State>() { spheres } else { 0 };
+        let contacts = list_capacity + spheres * W::COUNT;
         Ok(BufferSizes {
-            spheres,
             cells: cells + 1 + spheres,
-            list: list_capacity,
-            parking: stateful,
-            walls: stateful * W::COUNT,
-            pair_results: if parallel { list_capacity } else { 0 },
+            pairs: list_capacity,
+            vectors: list_capacity + 5 * spheres,
+            states: 2 * contacts,
+            parking: if stores::<L::State>() { spheres } else { 0 },
+            records: if records { contacts } else { 0 },
         })
     }
 
-    /// A scene over `spheres` in `domain` with `walls`, a Verlet list with `skin`, spheres no
+    /// A scene over `spheres` of materials `materials` (one id per sphere, rows of the step's
+    /// [`MaterialTable`]) in `domain` with `walls`, a Verlet list with `skin`, spheres no
     /// larger than `largest_diameter`, and the buffers of [`Scene::buffer_sizes`].
     ///
     /// # Errors
-    /// [`SceneError::Domain`] for a bad domain or skin; [`SceneError::BufferLength`] for a
-    /// buffer of another length than [`Scene::buffer_sizes`] gives (`pair_results` may be
-    /// empty); [`SceneError::History`] for stored states of pairs that are not this scene's.
+    /// [`SceneError::Domain`] for a bad domain or skin; [`SceneError::Materials`] for material
+    /// ids that are not one per sphere; [`SceneError::BufferLength`] for a buffer of another
+    /// length than [`Scene::buffer_sizes`] gives (`records` may be empty);
+    /// [`SceneError::History`] for stored states of pairs that are not this scene's.
     pub fn new(
         domain: Domain<L::Float>,
         (largest_diameter, skin): (L::Float, L::Float),
-        spheres: &'a mut [CheckedSphere<L::Float>],
+        (spheres, materials): (&'a mut [CheckedSphere<L::Float>], &'a [u32]),
         buffers: SceneBuffers<'a, L::Float, L::State, K>,
         walls: W,
     ) -> Result<Self, SceneError> {
@@ -216,48 +236,111 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         }
         let grid = Grid::new(domain, largest_diameter + skin)?;
         let n = spheres.len();
+        if materials.len() != n {
+            return Err(SceneError::Materials);
+        }
         let b = buffers;
-        let sizes = Self::buffer_sizes(&domain, (largest_diameter, skin), n, b.list.len(), true)?;
-        let lengths_ok = b.spheres.len() == sizes.spheres
-            && b.cells.len() == sizes.cells
+        let list = b.pairs.len();
+        let sizes = Self::buffer_sizes(&domain, (largest_diameter, skin), n, list, true)?;
+        let lengths_ok = b.cells.len() == sizes.cells
+            && b.vectors.len() == sizes.vectors
+            && b.states.len() == sizes.states
             && b.parking.len() == sizes.parking
-            && b.walls.len() == sizes.walls
             && n <= u32::MAX as usize
-            && (b.pair_results.is_empty() || b.pair_results.len() == sizes.pair_results);
+            && (b.records.is_empty() || b.records.len() == sizes.records);
         if !lengths_ok {
             return Err(SceneError::BufferLength);
         }
         let relaxed = L::State::default();
-        let foreign = b.list.iter().any(|entry| {
-            let c = entry.candidate;
-            entry.states != [relaxed; 2] && !(c.i < c.j && (c.j as usize) < n)
-        });
+        let foreign = b
+            .pairs
+            .iter()
+            .zip(b.states.iter())
+            .any(|(&[i, j], state)| *state != relaxed && !(i < j && (j as usize) < n));
         if foreign {
             return Err(SceneError::History);
         }
-        let listed = b.list.len();
         let (cell_start, cell_entries) = b.cells.split_at_mut(grid.total() + 1);
+        let (shifts, per_sphere) = b.vectors.split_at_mut(list);
+        let (force, per_sphere) = per_sphere.split_at_mut(n);
+        let (torque, per_sphere) = per_sphere.split_at_mut(n);
+        let (anchor, saved_loads) = per_sphere.split_at_mut(n);
+        let (pair_states, states) = b.states.split_at_mut(list);
+        let (wall_states, saved_states) = states.split_at_mut(n * W::COUNT);
         Ok(Self {
             spheres,
-            entries: b.spheres,
+            materials,
             cell_start,
             cell_entries,
-            list: b.list,
+            pairs: b.pairs,
+            shifts,
+            force,
+            torque,
+            anchor,
+            saved_loads,
+            pair_states,
+            wall_states,
+            saved_states,
             parking: b.parking,
-            wall_states: b.walls,
-            pair_results: b.pair_results,
+            records: b.records,
             walls,
             // Until the first build, the whole buffer: its relaxed states are skipped.
-            candidate_count: listed,
+            candidate_count: list,
             grid,
             skin,
             list_current: false,
             list_builds: 0,
+            records_current: false,
             forces_current: false,
             halted: false,
-            live: 0,
+            ledger: Ledger::default(),
             law: PhantomData,
         })
+    }
+
+    /// `seconds` checked against the laws of `table` for the spheres and walls present: every
+    /// pair of materials at the smallest effective mass its spheres give, every sphere
+    /// material with every wall's ([`MaterialTable::time_step`]). Per-contact checks at every
+    /// step catch what this cannot see (a Hertz contact pressed harder than declared).
+    ///
+    /// # Errors
+    /// [`StepError::TimeStep`] for the first pair of materials whose law refuses the step;
+    /// [`StepError::Material`] / [`StepError::WallMaterial`] for an id past the table.
+    pub fn time_step<const M: usize>(
+        &self,
+        table: &MaterialTable<L, M>,
+        seconds: L::Float,
+    ) -> Result<TimeStep<L::Float>, StepError> {
+        table
+            .time_step(seconds, &self.sphere_slice(), self.walls.walls())
+            .map_err(|error| StepError::from_list(error, &[]))
+    }
+
+    /// The largest step every law of `table` present in the scene recommends
+    /// ([`MaterialTable::recommended_time_step`]); `None` without spheres.
+    ///
+    /// # Errors
+    /// As [`Scene::time_step`] for material ids past the table.
+    pub fn recommended_time_step<const M: usize>(
+        &self,
+        table: &MaterialTable<L, M>,
+    ) -> Result<Option<L::Float>, StepError> {
+        table
+            .recommended_time_step(&self.sphere_slice(), self.walls.walls())
+            .map_err(|error| StepError::from_list(error, &[]))
+    }
+
+    /// The spheres and their materials as the kernel's list seam reads them.
+    fn sphere_slice(&self) -> SphereSlice<'_, L::Float> {
+        SphereSlice {
+            spheres: self.spheres,
+            material: self.materials,
+        }
+    }
+
+    /// Whether a step diverged: the scene then refuses every later step.
+    pub fn halted(&self) -> bool {
+        self.halted
     }
 
     /// How many times the Verlet list has been built.
@@ -268,6 +351,11 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// The spheres.
     pub fn spheres(&self) -> &[CheckedSphere<L::Float>] {
         self.spheres
+    }
+
+    /// The spheres' material ids.
+    pub fn materials(&self) -> &[u32] {
+        self.materials
     }
 
     /// The walls.
@@ -283,38 +371,36 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// The contact force and torque on sphere `index` from the last evaluation, `None` past the
     /// last sphere.
     pub fn load(&self, index: usize) -> Option<Load<L::Float>> {
-        self.entries.get(index).map(SphereEntry::load)
+        Some((*self.force.get(index)?, *self.torque.get(index)?))
     }
 
     /// Rebuilds the Verlet list from the cell grid and carries each touching pair's state over
     /// to its new place in the list (through the parking, so a sphere can own at most `K`).
     /// A failed build leaves the history in the list, as a list of the stored pairs.
     fn rebuild_list(&mut self) -> Result<(), StepError> {
-        let live = self.live;
         let relaxed = L::State::default();
+        let old_count = self.candidate_count;
         if stores::<L::State>() {
             for parking in self.parking.iter_mut() {
                 parking.clear();
             }
-            for entry in &self.list[..self.candidate_count] {
+            let stored = self.pairs.iter().zip(self.pair_states.iter());
+            for (&[i, j], &state) in stored.take(old_count) {
                 // A relaxed state is what a new contact starts from: nothing to carry.
-                let state = entry.states[live];
                 if state != relaxed {
-                    let c = entry.candidate;
-                    self.parking[c.i as usize]
-                        .push(c.j, state)
+                    self.parking[i as usize]
+                        .push(j, state)
                         .map_err(|()| StepError::ParkingFull)?;
                 }
             }
         }
-        let old_count = self.candidate_count;
         self.grid
             .sort(self.spheres, self.cell_start, self.cell_entries);
         let Ok(count) = self.grid.pairs(
             self.spheres,
             (self.cell_start, self.cell_entries),
             self.skin,
-            self.list,
+            (self.pairs, self.shifts),
         ) else {
             // The list's pairs were overwritten up to its end: write the parked history back,
             // for the next attempt or for a scene over a larger list.
@@ -324,47 +410,38 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         self.candidate_count = count;
         if stores::<L::State>() {
             // Keep every state past the list relaxed (see `SceneBuffers`).
-            for entry in self.list[count..old_count.max(count)].iter_mut() {
-                entry.states = [relaxed; 2];
-            }
-            for entry in self.list[..count].iter_mut() {
-                let c = entry.candidate;
-                entry.states[live] = self.parking[c.i as usize].find(c.j);
+            self.pair_states[count..old_count.max(count)].fill(relaxed);
+            let listed = self.pairs.iter().zip(self.pair_states.iter_mut());
+            for (&[i, j], state) in listed.take(count) {
+                *state = self.parking[i as usize].find(j);
             }
         }
-        for (entry, sphere) in self.entries.iter_mut().zip(self.spheres.iter()) {
-            entry.anchor = sphere.position;
+        for (anchor, sphere) in self.anchor.iter_mut().zip(self.spheres.iter()) {
+            *anchor = sphere.position;
         }
         self.list_current = true;
+        self.records_current = false;
         self.list_builds += 1;
         Ok(())
     }
 
-    /// Writes the parked states back as the list's first entries (each pair with no image
-    /// shift: the list is not current, so only its pairs and states are read) and relaxes the
-    /// rest up to `old_count`. They fit: they were parked from the first `old_count` entries.
+    /// Writes the parked states back as the list's first entries (each pair with no shift: the
+    /// list is not current, so only its pairs and states are read) and relaxes the rest up to
+    /// `old_count`. They fit: they were parked from the first `old_count` entries.
     fn unpark(&mut self, old_count: usize) {
         if !stores::<L::State>() {
             return;
         }
-        let relaxed = L::State::default();
         let mut count = 0;
         for (i, parking) in self.parking.iter().enumerate() {
             for (j, state) in parking.parked() {
-                self.list[count] = ListEntry {
-                    candidate: Candidate {
-                        i: i as u32,
-                        j,
-                        image: [0, 0],
-                    },
-                    states: [state; 2],
-                };
+                self.pairs[count] = [i as u32, j];
+                self.shifts[count] = Vec3::ZERO;
+                self.pair_states[count] = state;
                 count += 1;
             }
         }
-        for entry in self.list[count..old_count.max(count)].iter_mut() {
-            entry.states = [relaxed; 2];
-        }
+        self.pair_states[count..old_count.max(count)].fill(L::State::default());
         self.candidate_count = count;
     }
 }

@@ -1,14 +1,15 @@
 //! The walls of a scene as a compile-time slot: a scene without walls pays nothing for them.
 
-use soft_sphere::{Float, Wall};
+use soft_sphere::{Float, MaterialWall};
 
 /// The walls of a scene, chosen at compile time: [`NoWalls`] costs nothing. The number of walls
-/// is the type's, so the scene sizes its wall buffer from it.
+/// is the type's, so the scene sizes its wall states from it. Each wall carries a material id
+/// of the step's [`MaterialTable`](soft_sphere::MaterialTable).
 pub trait WallSet<F: Float>: Sync {
     /// How many walls.
     const COUNT: usize;
-    /// Wall `k`, `None` past [`WallSet::COUNT`].
-    fn wall(&self, k: usize) -> Option<&Wall<F>>;
+    /// The walls, [`WallSet::COUNT`] of them.
+    fn walls(&self) -> &[MaterialWall<F>];
 }
 
 /// A scene without walls.
@@ -17,14 +18,14 @@ pub struct NoWalls;
 
 impl<F: Float> WallSet<F> for NoWalls {
     const COUNT: usize = 0;
-    fn wall(&self, _: usize) -> Option<&Wall<F>> {
-        None
+    fn walls(&self) -> &[MaterialWall<F>] {
+        &[]
     }
 }
 
-impl<F: Float, const N: usize> WallSet<F> for [Wall<F>; N] {
+impl<F: Float, const N: usize> WallSet<F> for [MaterialWall<F>; N] {
     const COUNT: usize = N;
-    fn wall(&self, k: usize) -> Option<&Wall<F>> {
-        self.get(k)
+    fn walls(&self) -> &[MaterialWall<F>] {
+        self
     }
 }

@@ -155,6 +155,7 @@ impl Seam {
     ) -> usize {
         let list = ContactList {
             pairs,
+            shifts: &[],
             pair_states: &mut self.states,
             walls: &[],
             wall_states: &mut [],

@@ -15,12 +15,12 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use host_tests::scene::{
-    Column, OwnedScene, Threads, positions_csv, wall_restitution_for_same_dashpot,
-    write_lammps_data,
+    Column, OwnedScene, SceneExt, Threads, pair_and_wall, positions_csv, wall_of,
+    wall_restitution_for_same_dashpot, write_lammps_data,
 };
 use soft_sphere::{
-    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, ModelAA, Sphere, Std,
-    TangentialParameters, Vec3, Wall,
+    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, MaterialWall, ModelAA,
+    Sphere, Std, TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
 
@@ -87,8 +87,11 @@ fn tangential() -> TangentialParameters<f64> {
     TangentialParameters::new(2.0 / 7.0 * NORMAL_STIFFNESS, DASHPOT_RATIO, FRICTION).unwrap()
 }
 
-fn floor() -> [Wall<f64>; 1] {
-    [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap()]
+fn floor() -> [MaterialWall<f64>; 1] {
+    [wall_of(
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        1,
+    )]
 }
 
 /// Pours the column from its lattice and lets it settle (more damping, a longer step), then
@@ -129,9 +132,9 @@ fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
         LinearSpringDashpot::new(NORMAL_STIFFNESS, wall_e)?,
         ModelAA(tangential()),
     );
+    let table = pair_and_wall(law, wall_law);
     let input = StepInput {
-        law: &law,
-        wall_law: &wall_law,
+        table: &table,
         gravity: Vec3::new(0.0, 0.0, -GRAVITY),
         time_step: law.time_step(4e-6, mass / 2.0)?,
         integrator: Integrator::SymplecticEuler,
@@ -167,7 +170,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     o: &Options,
     spheres: &[Sphere<f64>],
     height: f64,
-    input: &StepInput<'_, L>,
+    input: &StepInput<'_, L, 2>,
     walls: &W,
 ) -> Result<Measured, Box<dyn Error>> {
     let mut seconds = Vec::new();
@@ -197,7 +200,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
         eprintln!(
             "  run: {:.3} s, {} list builds",
             seconds[seconds.len() - 1],
-            scene.list_builds
+            scene.list_builds()
         );
         let n = spheres.len() as f64;
         sliding_fraction = sliding as f64 / touching.max(1) as f64;
@@ -231,9 +234,9 @@ fn run_variant<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     walls: &W,
 ) -> Result<Measured, Box<dyn Error>> {
     let time_step = law.time_step(TIME_STEP, spheres[0].mass / 2.0)?;
+    let table = pair_and_wall(law, wall_law);
     let input = StepInput {
-        law: &law,
-        wall_law: &wall_law,
+        table: &table,
         gravity: Vec3::new(0.0, 0.0, -GRAVITY),
         time_step,
         integrator: o.integrator,

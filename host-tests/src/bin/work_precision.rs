@@ -22,7 +22,9 @@ use std::time::Instant;
 
 use host_tests::impact::{Integrator, floor, incoming_sphere, wall_impact_with};
 use host_tests::plot::{Axes, Mark, Series, chart};
-use host_tests::scene::{Column, OwnedScene, wall_restitution_for_same_dashpot};
+use host_tests::scene::{
+    Column, OwnedScene, SceneExt, pair_and_wall, wall_of, wall_restitution_for_same_dashpot,
+};
 use host_tests::validation::kharaz::TALK;
 use host_tests::validation::{Cell, Table};
 use soft_sphere::{
@@ -231,13 +233,13 @@ type Bed = (Vec<Sphere<f64>>, scene::Domain<f64>);
 fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
     let (lattice, height) = BED.lattice::<f64>();
     let domain = BED.domain(height);
-    let walls = [Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?];
+    let walls = [wall_of(Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?, 1)];
     let mass = lattice[0].mass;
     let [law, wall_law] = scene_laws::<f64, Libm>(0.3, mass);
     let mut bed = OwnedScene::new(lattice, domain, (BED.diameter, BED_SKIN), walls)?;
+    let table = pair_and_wall(law, wall_law);
     let input = StepInput {
-        law: &law,
-        wall_law: &wall_law,
+        table: &table,
         gravity: Vec3::new(0.0, 0.0, -9.81),
         time_step: law.time_step(4e-6, mass / 2.0)?,
         integrator: Integrator::SymplecticEuler,
@@ -284,10 +286,13 @@ fn shake<F: Float, M: MathBackend<F>>(
     let contact = law.contact_duration(f(mass / 2.0)).to_f64();
     let dt = contact / steps_per_contact;
     let steps = (SHAKE_DURATIONS * steps_per_contact).round() as usize;
-    let walls = [Wall::new(Vec3::ZERO, Vec3::new(F::ZERO, F::ZERO, F::ONE))?];
+    let walls = [wall_of(
+        Wall::new(Vec3::ZERO, Vec3::new(F::ZERO, F::ZERO, F::ONE))?,
+        1,
+    )];
+    let table = pair_and_wall(law, wall_law);
     let input = StepInput {
-        law: &law,
-        wall_law: &wall_law,
+        table: &table,
         gravity: Vec3::new(F::ZERO, F::ZERO, f(-9.81)),
         time_step: law.time_step(f(dt), f(mass / 2.0))?,
         integrator,

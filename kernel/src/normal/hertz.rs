@@ -222,6 +222,12 @@ impl<F: Float> NormalModel<F> for Hertz<F> {
         F::TWO * self.effective_modulus * contact.contact_radius
     }
 
+    /// `(8/15) E* a delta^2` with `a = sqrt(R* delta)`.
+    fn elastic_energy(&self, overlap: F, effective_radius: F) -> F {
+        let radius = F::DefaultBackend::sqrt(effective_radius * overlap);
+        F::from_f64(8.0 / 15.0) * self.effective_modulus * radius * overlap * overlap
+    }
+
     /// The oscillator linearised at a contact radius of 1 m: tangent stiffness `dF/d delta =
     /// 2 E* a`, dashpot `alpha sqrt(m* (4/3) E*)`.
     #[inline(always)]

@@ -146,6 +146,10 @@ impl<F: Float> NormalModel<F> for LinearSpringDashpot<F> {
         self.stiffness
     }
 
+    fn elastic_energy(&self, overlap: F, _: F) -> F {
+        F::HALF * self.stiffness * overlap * overlap
+    }
+
     #[inline(always)]
     fn oscillator<M: MathBackend<F>>(&self, effective_mass: F) -> NormalOscillator<F> {
         let natural_frequency = M::sqrt(self.stiffness / effective_mass);
@@ -228,6 +232,10 @@ impl<F: Float> NormalModel<F> for LinearSpring<F> {
     #[inline(always)]
     fn tangent_stiffness(&self, _: &NormalContact<F>) -> F {
         self.stiffness
+    }
+
+    fn elastic_energy(&self, overlap: F, _: F) -> F {
+        F::HALF * self.stiffness * overlap * overlap
     }
 
     #[inline(always)]

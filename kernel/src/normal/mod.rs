@@ -90,6 +90,11 @@ pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// step's stability limit is checked against.
     fn tangent_stiffness(&self, contact: &NormalContact<F>) -> F;
 
+    /// The elastic energy the spring holds at overlap `delta` (J): `k_n delta^2 / 2` for a
+    /// linear law, `(8/15) E* sqrt(R*) delta^(5/2)` for [`Hertz`] (the work of its elastic
+    /// force from first touch). The dashpot holds none.
+    fn elastic_energy(&self, overlap: F, effective_radius: F) -> F;
+
     /// The stiffest contact the law expects for this effective mass, from which the time steps
     /// follow: a linear law's only oscillator; for [`Hertz`], the contact at the peak overlap of
     /// its declared largest impact.

@@ -111,6 +111,10 @@ macro_rules! stored_spring_model {
                 stored_spring_step::<F, M>(&self.0, state, contact, $slide, $keep)
             }
 
+            fn stored_energy(&self, state: &SpringDisplacement<F>) -> F {
+                F::HALF * self.0.stiffness() * state.displacement.norm_squared()
+            }
+
             fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
         let oscillator = &design.oscillator;
                 self.0.spring_critical_step(oscillator, tangential_mass)

@@ -174,6 +174,15 @@ macro_rules! stored_mindlin_model {
                 mindlin_step::<F, M>(&self.0, state, contact, $keep)
             }
 
+            fn stored_energy(&self, state: &MindlinSpring<F>) -> F {
+                let stiffness = self.0.stiffness(state.contact_radius);
+                if stiffness > F::ZERO {
+                    state.force.norm_squared() / (F::TWO * stiffness)
+                } else {
+                    F::ZERO
+                }
+            }
+
             fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
                 self.0.critical_step(design, tangential_mass)
             }

@@ -115,6 +115,14 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
         contact: &TangentialInput<F>,
     ) -> TangentialOutput<F, Self::State>;
 
+    /// The elastic energy the stored spring of `state` holds (J): `k_t |xi|^2 / 2` for the
+    /// stored-displacement laws, `|F_s|^2 / (2 k_t(a))` for the stored Mindlin laws, zero for a
+    /// law that stores nothing (its spring's work is not kept, so it counts as dissipated).
+    fn stored_energy(&self, state: &Self::State) -> F {
+        let _ = state;
+        F::ZERO
+    }
+
     /// Whether the law's stiffness grows with the contact radius, so that it needs a normal law
     /// that has one ([`NormalModel::CONTACT_RADIUS`](crate::NormalModel::CONTACT_RADIUS)); a
     /// [`ContactLaw`](crate::ContactLaw) pairing it with one that has none does not compile.

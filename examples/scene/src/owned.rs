@@ -1,0 +1,241 @@
+//! A scene that owns its spheres and buffers (the `alloc` feature): what a std user builds.
+
+use alloc::vec;
+use alloc::vec::Vec;
+
+use soft_sphere::{CheckedSphere, Interaction, Law, Sphere, Vec3};
+
+use crate::parallel::{Executor, Serial};
+use crate::{
+    Domain, Parking, Scene, SceneBuffers, SceneError, StepError, StepInput, StepStats, WallSet,
+    check_spheres,
+};
+
+/// Verlet-list room per sphere: a dense monodisperse packing with a skin of a tenth of a
+/// diameter lists about 4.5 pairs per sphere; 8 leaves room for looser skins and denser beds.
+pub const PAIRS_PER_SPHERE: usize = 8;
+
+/// Stored contacts a sphere of an [`OwnedScene`] can own at a list rebuild (a monodisperse
+/// packing has at most 12 neighbours).
+pub const PARKING: usize = 16;
+
+/// A [`Scene`] that owns its spheres, material ids, walls and buffers, sized for
+/// [`PAIRS_PER_SPHERE`] list entries per sphere and at most [`PARKING`] stored contacts per
+/// sphere.
+/// Steps run inside [`OwnedScene::run`] or [`OwnedScene::scene`]; the contact history carries
+/// over from one to the next.
+///
+/// ```
+/// use soft_sphere::{
+///     ContactLaw, LinearSpringDashpot, MaterialTable, MaterialWall, ModelAA, Sphere,
+///     TangentialParameters, Vec3, Wall,
+/// };
+/// use soft_sphere_scene::{Domain, Integrator, OwnedScene, StepInput};
+///
+/// let law = ContactLaw::new(
+///     LinearSpringDashpot::new(1.0e4_f64, 0.5).unwrap(),
+///     ModelAA(TangentialParameters::new(8.0e3, 0.5, 0.4).unwrap()),
+/// );
+/// let table = MaterialTable::<_, 1>::uniform(law);
+/// let floor = MaterialWall { wall: Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(), material: 0 };
+/// let domain = Domain {
+///     lower: Vec3::ZERO, upper: Vec3::new(0.01, 0.01, 0.01), periodic_x: true, periodic_y: true,
+/// };
+/// let drop = Sphere::solid(Vec3::new(0.005, 0.005, 0.002), 5.0e-4, 2500.0);
+/// let mut scene = OwnedScene::new(vec![drop], domain, (1.0e-3, 1.0e-4), [floor])
+///     .unwrap()
+///     .with_records();
+/// let time_step = scene.scene(|s| s.time_step(&table, 1.0e-6)).unwrap().unwrap();
+/// let input = StepInput {
+///     table: &table, gravity: Vec3::new(0.0, 0.0, -9.81), time_step,
+///     integrator: Integrator::VelocityVerlet,
+/// };
+/// let mut last = None;
+/// scene.run(&input, 20_000, |_, stats| last = stats.energy).unwrap();
+/// assert!(scene.spheres()[0].position.z < 5.0e-4); // resting on the floor
+/// let energy = last.unwrap();
+/// assert!(energy.dissipated_dashpots > 0.0);
+/// ```
+#[derive(Clone, Debug)]
+pub struct OwnedScene<L: Law, W> {
+    spheres: Vec<CheckedSphere<L::Float>>,
+    materials: Vec<u32>,
+    walls: W,
+    domain: Domain<L::Float>,
+    largest_diameter: L::Float,
+    skin: L::Float,
+    cells: Vec<u32>,
+    pairs: Vec<[u32; 2]>,
+    vectors: Vec<Vec3<L::Float>>,
+    states: Vec<L::State>,
+    parking: Vec<Parking<L::State, PARKING>>,
+    records: Vec<Interaction<L::Float>>,
+    list_builds: usize,
+    halted: bool,
+}
+
+impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
+    /// A scene of `spheres` (all of material 0) in `domain` with `walls`, a Verlet list with
+    /// `skin`, and spheres no larger than `largest_diameter`.
+    ///
+    /// # Errors
+    /// [`SceneError::Sphere`] for the first invalid sphere; [`SceneError::Domain`] for a bad
+    /// domain or skin.
+    pub fn new(
+        spheres: Vec<Sphere<L::Float>>,
+        domain: Domain<L::Float>,
+        (largest_diameter, skin): (L::Float, L::Float),
+        walls: W,
+    ) -> Result<Self, SceneError> {
+        let spheres = check_spheres(spheres).collect::<Result<Vec<_>, _>>()?;
+        let n = spheres.len();
+        let capacity = PAIRS_PER_SPHERE * n + 64;
+        let sizes = Scene::<L, W, PARKING>::buffer_sizes(
+            &domain,
+            (largest_diameter, skin),
+            n,
+            capacity,
+            false,
+        )?;
+        if !(skin >= soft_sphere::Float::ZERO) {
+            return Err(SceneError::Domain);
+        }
+        Ok(Self {
+            spheres,
+            materials: vec![0; n],
+            walls,
+            domain,
+            largest_diameter,
+            skin,
+            cells: vec![0; sizes.cells],
+            pairs: vec![[0; 2]; sizes.pairs],
+            vectors: vec![Vec3::ZERO; sizes.vectors],
+            states: vec![L::State::default(); sizes.states],
+            parking: vec![Parking::default(); sizes.parking],
+            records: Vec::new(),
+            list_builds: 0,
+            halted: false,
+        })
+    }
+
+    /// The same scene with material ids `materials`, one per sphere.
+    ///
+    /// # Errors
+    /// [`SceneError::Materials`] when they are not one per sphere.
+    pub fn with_materials(mut self, materials: Vec<u32>) -> Result<Self, SceneError> {
+        if materials.len() != self.spheres.len() {
+            return Err(SceneError::Materials);
+        }
+        self.materials = materials;
+        Ok(self)
+    }
+
+    /// The same scene keeping each contact's outcome: [`Scene::contacts`] and the energy
+    /// account in [`StepStats::energy`].
+    pub fn with_records(mut self) -> Self {
+        self.records = vec![Interaction::Apart; self.pairs.len() + self.spheres.len() * W::COUNT];
+        self
+    }
+
+    /// Calls `work` with the scene over the owned buffers (to step it, read its contacts, check
+    /// a time step). The contact history carries over from one call to the next; the list is
+    /// built afresh in each.
+    ///
+    /// # Errors
+    /// [`StepError::Halted`] after a step diverged.
+    pub fn scene<R>(
+        &mut self,
+        work: impl FnOnce(&mut Scene<'_, L, W, PARKING>) -> R,
+    ) -> Result<R, StepError> {
+        if self.halted {
+            return Err(StepError::Halted);
+        }
+        let buffers = SceneBuffers {
+            cells: &mut self.cells,
+            pairs: &mut self.pairs,
+            vectors: &mut self.vectors,
+            states: &mut self.states,
+            parking: &mut self.parking,
+            records: &mut self.records,
+        };
+        let mut scene = Scene::new(
+            self.domain,
+            (self.largest_diameter, self.skin),
+            (&mut self.spheres, &self.materials),
+            buffers,
+            self.walls.clone(),
+        )?;
+        let returned = work(&mut scene);
+        self.list_builds = scene.list_builds();
+        self.halted = scene.halted();
+        self.walls = scene.walls().clone();
+        Ok(returned)
+    }
+
+    /// Runs `steps` steps, calling `each` with every step's totals.
+    ///
+    /// # Errors
+    /// The first [`StepError`].
+    pub fn run<const M: usize>(
+        &mut self,
+        input: &StepInput<'_, L, M>,
+        steps: usize,
+        each: impl FnMut(usize, &StepStats<L::Float>),
+    ) -> Result<(), StepError> {
+        self.run_on(input, steps, &Serial, each)
+    }
+
+    /// [`OwnedScene::run`] with each step's integration spread over `executor`; the same bits.
+    ///
+    /// # Errors
+    /// As [`OwnedScene::run`].
+    pub fn run_on<E: Executor, const M: usize>(
+        &mut self,
+        input: &StepInput<'_, L, M>,
+        steps: usize,
+        executor: &E,
+        mut each: impl FnMut(usize, &StepStats<L::Float>),
+    ) -> Result<(), StepError> {
+        self.scene(|scene| {
+            for step in 0..steps {
+                each(step, &scene.step_on(input, executor)?);
+            }
+            Ok(())
+        })?
+    }
+
+    /// The spheres.
+    pub fn spheres(&self) -> &[CheckedSphere<L::Float>] {
+        &self.spheres
+    }
+
+    /// The spheres, to change them between runs (their number stays).
+    pub fn spheres_mut(&mut self) -> &mut [CheckedSphere<L::Float>] {
+        &mut self.spheres
+    }
+
+    /// The material ids.
+    pub fn materials(&self) -> &[u32] {
+        &self.materials
+    }
+
+    /// The walls.
+    pub fn walls(&self) -> &W {
+        &self.walls
+    }
+
+    /// The walls, to move them between runs.
+    pub fn walls_mut(&mut self) -> &mut W {
+        &mut self.walls
+    }
+
+    /// The box.
+    pub fn domain(&self) -> &Domain<L::Float> {
+        &self.domain
+    }
+
+    /// Verlet-list builds of the last run.
+    pub fn list_builds(&self) -> usize {
+        self.list_builds
+    }
+}
