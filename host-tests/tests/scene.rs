@@ -184,12 +184,12 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
                 .fold(Vec3::ZERO, |p, s| p + s.velocity * s.mass)
                 .to_array()
         };
-        let before = momentum(&scene.spheres());
+        let before = momentum(scene.spheres());
         let mut contacts = 0;
         scene
             .run(&input, 2000, |_, stats| contacts += stats.pair_contacts)
             .unwrap();
-        let after = momentum(&scene.spheres());
+        let after = momentum(scene.spheres());
         let scale: f64 = scene.spheres().iter().map(|s| s.mass * 0.2).sum();
         for k in 0..3 {
             assert!(
@@ -1202,7 +1202,7 @@ fn threads_keep_every_spheres_wall_history() {
                 .run_on(&input, 200, &Threads::new(n).unwrap(), record)
                 .unwrap(),
         }
-        (motion_bits(&scene.spheres()), on_floor)
+        (motion_bits(scene.spheres()), on_floor)
     };
     let (serial, on_floor) = run(None);
     assert_eq!(on_floor, side * side, "every sphere touches the floor");
@@ -1231,7 +1231,6 @@ fn a_threaded_step_over_caller_buffers_gives_the_bits_of_one_thread() {
     let touching = (0..80)
         .map(|_| scene.step_on(&input, &pool).unwrap().pair_contacts)
         .max();
-    drop(scene);
     assert_eq!(touching, Some(2), "both pairs touched at once");
     assert_eq!(motion_bits(&threaded), motion_bits(&serial));
 }
@@ -1320,7 +1319,6 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
     for _ in 0..steps {
         scene.step(&input).unwrap();
     }
-    drop(scene);
     let direct: Vec<CheckedSphere<f64>> = direct
         .into_iter()
         .map(|s| CheckedSphere::new(s).unwrap())

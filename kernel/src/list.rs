@@ -90,7 +90,9 @@ impl<F, S> ListOutput<'_, F, S> {
 
 /// The working memory in which an evaluation keeps a copy of what it changes (every state,
 /// every force and torque), so that a refused contact leaves the caller's arrays exactly as
-/// they were. Its contents between calls mean nothing.
+/// they were. After a call that succeeded, [`Backup::states`] holds every state as it was
+/// before the call (an engine can take the step back, or compare the springs before and
+/// after); after a refused one, nothing of meaning.
 #[derive(Debug)]
 pub struct Backup<'a, F, S> {
     /// One per contact ([`ListOutput::records_needed`]).
@@ -489,7 +491,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
         let outcome = evaluate_pairs(
             spheres,
-            (pairs, shifts, &mut *list.pair_states),
+            (pairs, shifts),
+            &mut *list.pair_states,
             &mut bound,
             &mut sink,
             blocks,
@@ -586,7 +589,8 @@ const GROUP: usize = 8;
 /// list order. Stops at the first chunk with a refused pair, naming the first in list order.
 fn evaluate_pairs<L: Law, const M: usize>(
     spheres: &impl Spheres<L::Float>,
-    (pairs, shifts, states): (&[[u32; 2]], &[Vec3<L::Float>], &mut [L::State]),
+    (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
+    states: &mut [L::State],
     bound: &mut [[BoundLaw<'_, L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
     blocks: bool,

@@ -1,16 +1,17 @@
 //! The scene's energy account: where the energy of the spheres went, step by step.
 //!
-//! Kinetic and rotational energy are read from the spheres; the energy stored in the contacts'
-//! springs from the kernel ([`Law::stored_energy`]); gravity's work is summed over each drift as
-//! the integrator moves the spheres, and a moving wall's as the force on it times its velocity.
-//! What the contacts took from the spheres and do not hold is dissipated: each step, a
-//! contact's power into the spheres (`F_j . (v_j - v_i) + T_i . w_i + T_j . w_j`) times the step,
-//! less the change of its stored energy. The normal part goes to the dashpots; the tangential
-//! and rolling part to the sliders when the contact slid that step, else to the dashpots. The
+//! Kinetic and rotational energy are read from the spheres. The work of the contact forces and
+//! of gravity is booked in every kick exactly as the integrator applies it (a force `F` that
+//! takes a velocity from `v` to `v'` in `h` seconds does `F . (v + v') h / 2`), so the kinetic
+//! energy's change is the booked work to rounding. The contacts' springs hold what the kernel
+//! says they store ([`Law::stored_energy`]); a moving wall's drive does `-F . v_wall` per
+//! second. What the contacts took from the spheres and neither hold nor got from a wall's drive
+//! is dissipated. Of it, the sliders' share is each sliding contact's tangential power into
+//! the spheres at its evaluation, less its springs' change; the rest is the dashpots'. The
 //! balance `kinetic + rotational + stored + dissipated - gravity_work - wall_work` is then
-//! constant up to the integrator's error, which falls with the step (`docs/physics.md`, 4.3).
+//! constant to rounding (`docs/physics.md`, 4.3).
 
-use soft_sphere::{Float, Interaction, Law, MaterialTable};
+use soft_sphere::{Float, Interaction, Law, MaterialTable, Vec3};
 
 use crate::{Scene, StepStats, WallSet};
 
@@ -49,33 +50,31 @@ impl<F: Float> Energy<F> {
     }
 }
 
-/// The running totals of the energy account, and what the last step's contacts will have
-/// dissipated by the next (their power covers the step that follows their evaluation).
+/// The running totals of the energy account since its first recorded step.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Ledger<F> {
     started: bool,
+    /// The stored energy at the first recorded step.
+    first_stored: F,
     stored: F,
-    normal_stored: F,
+    /// Work the contact forces and torques did on the spheres in every kick.
+    pub(crate) contact_work: F,
     pub(crate) gravity_work: F,
     wall_work: F,
-    dashpots: F,
     sliding: F,
-    pending_normal_power: F,
-    pending_dashpots: F,
-    pending_sliding: F,
-    pending_wall_work: F,
 }
 
 impl<F: Float> Ledger<F> {
     /// The account without the spheres' motion (filled in by `account_motion`).
     pub(crate) fn energy(&self) -> Energy<F> {
+        let dissipated = self.wall_work - self.contact_work - (self.stored - self.first_stored);
         Energy {
             kinetic: F::ZERO,
             rotational: F::ZERO,
             stored: self.stored,
             gravity_work: self.gravity_work,
             wall_work: self.wall_work,
-            dissipated_dashpots: self.dashpots,
+            dissipated_dashpots: dissipated - self.sliding,
             dissipated_sliding: self.sliding,
         }
     }
@@ -84,18 +83,15 @@ impl<F: Float> Ledger<F> {
 /// The sums of one step's contacts.
 #[derive(Clone, Copy, Debug, Default)]
 struct Sums<F> {
-    normal_stored: F,
-    spring_stored: F,
-    normal_power: F,
-    dashpots: F,
+    stored: F,
     sliding: F,
     wall_work: F,
 }
 
 impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
-    /// Books the contacts of a committed evaluation: their stored energy now, what the last
-    /// step's contacts dissipated, and what this step's will. Reads the records, the states
-    /// after the step and the seam's copy of the states before it.
+    /// Books the contacts of a committed evaluation: their stored energy, the sliders' share of
+    /// the step's dissipation, a moving wall's drive. Reads the records, the states after the
+    /// step and the seam's copy of the states before it.
     pub(crate) fn account_contacts<const M: usize>(
         &mut self,
         table: &MaterialTable<L, M>,
@@ -136,7 +132,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                 let velocity = wall.wall.velocity();
                 let motion = [
                     (sphere.velocity, sphere.angular_velocity),
-                    (velocity, soft_sphere::Vec3::ZERO),
+                    (velocity, Vec3::ZERO),
                 ];
                 let states = (
                     &self.saved_states[k],
@@ -151,20 +147,17 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             }
         }
         let ledger = &mut self.ledger;
-        if ledger.started {
-            let normal_change = sums.normal_stored - ledger.normal_stored;
-            ledger.dashpots +=
-                ledger.pending_dashpots - ledger.pending_normal_power * dt - normal_change;
-            ledger.sliding += ledger.pending_sliding;
-            ledger.wall_work += ledger.pending_wall_work;
+        if !ledger.started {
+            // The account opens here: work from now on, stored energy measured from now.
+            *ledger = Ledger {
+                started: true,
+                first_stored: sums.stored,
+                ..Ledger::default()
+            };
         }
-        ledger.started = true;
-        ledger.normal_stored = sums.normal_stored;
-        ledger.stored = sums.normal_stored + sums.spring_stored;
-        ledger.pending_normal_power = sums.normal_power;
-        ledger.pending_dashpots = sums.dashpots;
-        ledger.pending_sliding = sums.sliding;
-        ledger.pending_wall_work = sums.wall_work;
+        ledger.stored = sums.stored;
+        ledger.sliding += sums.sliding;
+        ledger.wall_work += sums.wall_work;
     }
 
     /// The spheres' kinetic and rotational energy into the step's account.
@@ -181,40 +174,34 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     }
 }
 
-/// One contact's share of a step: the springs it holds before the step (its state then, the
-/// normal spring at this overlap), and what it dissipates over the step. `motion` is the
-/// velocity and spin of body i and body j (a wall's velocity and no spin); `states` the state
-/// before and after the step.
+/// A body's velocity and spin.
+type Motion<F> = (Vec3<F>, Vec3<F>);
+
+/// One contact's share of a step: the springs it holds after the step, and, when it slid, what
+/// its slider took (its tangential and rolling power into the spheres over the step, less the
+/// change of its springs). `motion` is the velocity and spin of body i and body j (a wall's
+/// velocity and no spin); `states` the state before and after the step.
 fn book<L: Law>(
     law: &L,
     (radius, dt): (L::Float, L::Float),
-    [(v_i, w_i), (v_j, w_j)]: [(soft_sphere::Vec3<L::Float>, soft_sphere::Vec3<L::Float>); 2],
+    [(v_i, w_i), (v_j, w_j)]: [Motion<L::Float>; 2],
     (before, after): (&L::State, &L::State),
     record: &Interaction<L::Float>,
     sums: &mut Sums<L::Float>,
 ) {
-    let zero = L::Float::ZERO;
-    // At zero overlap the normal spring holds nothing: what is left is the tangential and
-    // rolling springs of the state.
-    let spring_before = law.stored_energy(zero, radius, before);
-    sums.spring_stored += spring_before;
-    match record {
-        Interaction::Touching(c) => {
-            let spring_after = law.stored_energy(zero, radius, after);
-            sums.normal_stored += law.stored_energy(c.overlap, radius, after) - spring_after;
-            let relative = v_j - v_i;
-            let normal_power = c.normal_force * relative.dot(c.normal);
-            let power =
-                c.force_on_j().dot(relative) + c.torque_on_i.dot(w_i) + c.torque_on_j.dot(w_j);
-            sums.normal_power += normal_power;
-            let loss = -(power - normal_power) * dt - (spring_after - spring_before);
-            if c.sliding {
-                sums.sliding += loss;
-            } else {
-                sums.dashpots += loss;
-            }
-        }
-        // A contact that parted let its springs go: their energy is lost to the spheres.
-        Interaction::Apart => sums.dashpots += spring_before,
+    let Interaction::Touching(c) = record else {
+        return;
+    };
+    sums.stored += law.stored_energy(c.overlap, radius, after);
+    if c.sliding {
+        // At zero overlap the normal spring holds nothing: what is left is the tangential and
+        // rolling springs of the state.
+        let zero = L::Float::ZERO;
+        let springs =
+            law.stored_energy(zero, radius, after) - law.stored_energy(zero, radius, before);
+        let relative = v_j - v_i;
+        let power =
+            c.tangential_force.dot(relative) + c.torque_on_i.dot(w_i) + c.torque_on_j.dot(w_j);
+        sums.sliding += -power * dt - springs;
     }
 }

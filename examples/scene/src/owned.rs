@@ -41,7 +41,7 @@ pub const PARKING: usize = 16;
 /// let domain = Domain {
 ///     lower: Vec3::ZERO, upper: Vec3::new(0.01, 0.01, 0.01), periodic_x: true, periodic_y: true,
 /// };
-/// let drop = Sphere::solid(Vec3::new(0.005, 0.005, 0.002), 5.0e-4, 2500.0);
+/// let drop = Sphere::solid(Vec3::new(0.005, 0.005, 6.0e-4), 5.0e-4, 2500.0);
 /// let mut scene = OwnedScene::new(vec![drop], domain, (1.0e-3, 1.0e-4), [floor])
 ///     .unwrap()
 ///     .with_records();
@@ -97,7 +97,8 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             capacity,
             false,
         )?;
-        if !(skin >= soft_sphere::Float::ZERO) {
+        let skin_ok = skin >= soft_sphere::Float::ZERO && soft_sphere::Float::is_finite(skin);
+        if !skin_ok {
             return Err(SceneError::Domain);
         }
         Ok(Self {

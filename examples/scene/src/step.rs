@@ -8,7 +8,7 @@ use soft_sphere::motion::Kick;
 use soft_sphere::{Backup, ContactList, Float, Law, ListOutput, SphereSlice, Vec3};
 
 use crate::parallel::{Executor, MAX_PIECES, Serial, piece_length};
-use crate::{Integrator, Scene, StepError, StepInput, StepStats, WallSet};
+use crate::{Energy, Integrator, Scene, StepError, StepInput, StepStats, WallSet};
 
 /// The last sphere kind's kick (see [`Kick`]).
 struct KickMemo<F> {
@@ -52,7 +52,9 @@ struct AdvancePiece<'p, F> {
     /// The first sphere of the stretch that diverged.
     diverged: Option<usize>,
     stale: bool,
-    /// Work gravity did on the stretch's spheres during the drift (J).
+    /// Work the contact forces and torques did on the stretch's spheres in the kick (J).
+    contact_work: F,
+    /// Work gravity did on the stretch's spheres in the kick (J).
     gravity_work: F,
 }
 
@@ -95,11 +97,10 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         }
         let dt = input.time_step.seconds();
         let half = <L::Float as Float>::HALF;
-        let stats = match input.integrator {
+        let mut stats = match input.integrator {
             Integrator::SymplecticEuler => {
-                let mut stats = self.evaluate(input, true)?;
+                let stats = self.evaluate(input, true)?;
                 self.forces_current = false;
-                self.account_motion(&mut stats);
                 self.advance(input.gravity, (dt, Some(dt)), executor)?;
                 stats
             }
@@ -111,13 +112,16 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                 // The forces no longer belong to the positions until the evaluation succeeds.
                 self.forces_current = false;
                 self.advance(input.gravity, (dt * half, Some(dt)), executor)?;
-                let mut stats = self.evaluate(input, true)?;
+                let stats = self.evaluate(input, true)?;
                 self.forces_current = true;
                 self.advance(input.gravity, (dt * half, None), executor)?;
-                self.account_motion(&mut stats);
                 stats
             }
         };
+        if stats.energy.is_some() {
+            stats.energy = Some(self.ledger.energy());
+            self.account_motion(&mut stats);
+        }
         Ok(stats)
     }
 
@@ -125,9 +129,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// then, given a `drift`, moves it that long at its new velocity, wraps it into the periodic
     /// box and checks the skin (a sphere that moved more than half of it since the last build
     /// could touch a pair the list does not hold; one that wrapped has broken its pairs'
-    /// shifts, and is a box length from where it was). Adds gravity's work in the drift to the
-    /// energy account, summed piece by piece in a fixed order (the pieces do not depend on the
-    /// executor).
+    /// shifts, and is a box length from where it was). Books the kick's work of the contacts and
+    /// of gravity in the energy account, summed piece by piece in a fixed order (the pieces do
+    /// not depend on the executor).
     ///
     /// # Errors
     /// [`StepError::Diverged`] when a sphere's position or velocity would no longer be finite;
@@ -153,6 +157,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                 first,
                 diverged: None,
                 stale: false,
+                contact_work: L::Float::ZERO,
                 gravity_work: L::Float::ZERO,
             };
             first += piece.spheres.len();
@@ -161,19 +166,29 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         let domain = self.grid.domain;
         let quarter = <L::Float as Float>::HALF * <L::Float as Float>::HALF;
         let half_skin_squared = self.skin * self.skin * quarter;
+        let half_kick = kick * <L::Float as Float>::HALF;
         executor.for_each_mut(&mut pieces, |piece| {
             let Some(piece) = piece else { return };
             let mut memo = KickMemo::new(kick);
             for (k, checked) in piece.spheres.iter_mut().enumerate() {
                 let (force, torque, anchor) = (piece.force[k], piece.torque[k], piece.anchor[k]);
                 let moved = checked.update(|sphere| {
-                    let kick = memo.get(sphere);
-                    kick.apply(sphere, force + gravity * sphere.mass, torque);
+                    let (velocity, spin) = (sphere.velocity, sphere.angular_velocity);
+                    memo.get(sphere)
+                        .apply(sphere, force + gravity * sphere.mass, torque);
+                    // Each force's work as the kick applies it: F . (v + v') h / 2.
+                    let (mean, mean_spin) = (
+                        (velocity + sphere.velocity) * half_kick,
+                        (spin + sphere.angular_velocity) * half_kick,
+                    );
+                    let work = (
+                        force.dot(mean) + torque.dot(mean_spin),
+                        gravity.dot(mean) * sphere.mass,
+                    );
                     let Some(dt) = drift else {
-                        return (false, L::Float::ZERO);
+                        return (false, work);
                     };
-                    let displacement = sphere.velocity * dt;
-                    sphere.position += displacement;
+                    sphere.position += sphere.velocity * dt;
                     let p = &mut sphere.position;
                     if domain.periodic_x {
                         p.x = wrap_into(p.x, domain.lower.x, domain.upper.x);
@@ -184,12 +199,13 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     // A sphere that wrapped sits about a box length (at least three cells) from
                     // its anchor, so this also stales the list whose shifts it broke.
                     let stale = (*p - anchor).norm_squared() > half_skin_squared;
-                    (stale, gravity.dot(displacement) * sphere.mass)
+                    (stale, work)
                 });
                 match moved {
-                    Ok((stale, work)) => {
+                    Ok((stale, (contact, gravity))) => {
                         piece.stale |= stale;
-                        piece.gravity_work += work;
+                        piece.contact_work += contact;
+                        piece.gravity_work += gravity;
                     }
                     Err(_) => {
                         piece.diverged = piece.diverged.or(Some(piece.first + k));
@@ -198,13 +214,14 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             }
         });
         let pieces = pieces.iter().flatten();
+        let zero = L::Float::ZERO;
         let (diverged, stale, work) = pieces.fold(
-            (None, false, L::Float::ZERO),
-            |(diverged, stale, work), piece| {
+            (None, false, (zero, zero)),
+            |(diverged, stale, (contact, gravity)), piece| {
                 (
                     Option::or(diverged, piece.diverged),
                     stale || piece.stale,
-                    work + piece.gravity_work,
+                    (contact + piece.contact_work, gravity + piece.gravity_work),
                 )
             },
         );
@@ -215,7 +232,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             self.halted = true;
             return Err(StepError::Diverged { index });
         }
-        self.ledger.gravity_work += work;
+        self.ledger.contact_work += work.0;
+        self.ledger.gravity_work += work.1;
         Ok(())
     }
 
@@ -278,7 +296,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         };
         if commit && keep_records {
             self.account_contacts(input.table, input.time_step.seconds());
-            stats.energy = Some(self.ledger.energy());
+            // Filled in at the end of the step, after its kicks.
+            stats.energy = Some(Energy::default());
         }
         Ok(stats)
     }

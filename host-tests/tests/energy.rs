@@ -1,0 +1,360 @@
+//! Where the energy goes. The springs' stored energy (`Law::stored_energy`) is the work done
+//! against them. The scene's energy account books the work of every kick as the integrator
+//! applies it, so its balance closes to rounding over a settling bed (the kinetic energy read
+//! from the spheres against the work summed from the forces); what it says of the sinks is
+//! checked against physics: an elastic gas dissipates nothing, a head-on impact dissipates
+//! `(1 - e^2)` of the pair's relative kinetic energy, a sphere sliding into rolling on a floor
+//! gives the rigid-body `2/7` of its kinetic energy to the slider.
+
+use host_tests::random::Xorshift;
+use host_tests::scene::{Column, OwnedScene, pair_and_wall, wall_of};
+use soft_sphere::{
+    ContactLaw, Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot, MaterialTable,
+    MaterialWall, MindlinAA, MindlinParameters, MindlinSpring, ModelAA, Sphere, SpringDisplacement,
+    TangentialParameters, Vec3, Wall, effective_mass,
+};
+use soft_sphere_scene::{Domain, Energy, Integrator, NoWalls, StepInput};
+
+const RADIUS: f64 = 0.5e-3;
+const DENSITY: f64 = 2500.0;
+
+type Linear = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+
+fn linear(restitution: f64, friction: f64) -> Linear {
+    ContactLaw::new(
+        LinearSpringDashpot::new(1000.0, restitution).unwrap(),
+        ModelAA(TangentialParameters::new(285.7, 0.5, friction).unwrap()),
+    )
+}
+
+/// Simpson's rule for `f` over `[0, end]` in `n` (even) intervals.
+fn simpson(f: impl Fn(f64) -> f64, end: f64, n: usize) -> f64 {
+    let h = end / n as f64;
+    let inner: f64 = (1..n)
+        .map(|k| f(k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(0.0) + inner + f(end)) * h / 3.0
+}
+
+#[test]
+fn a_hertz_spring_stores_the_work_of_its_elastic_force() {
+    // No dashpot (e = 1): at rest the normal force is the elastic force alone.
+    let impact = HertzImpact {
+        speed: 1.0,
+        effective_radius: RADIUS / 2.0,
+    };
+    let law = ContactLaw::new(
+        Hertz::new(5.0e8, 1.0, impact).unwrap(),
+        MindlinAA(MindlinParameters::new(2.0e8, 0.5, 0.4).unwrap()),
+    );
+    let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
+    let m = effective_mass(a.mass, a.mass);
+    let dt = law.time_step(1e-9, m).unwrap();
+    let force = |overlap: f64| {
+        let b = Sphere {
+            position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
+            ..a
+        };
+        let mut state = MindlinSpring::default();
+        match law.sphere_sphere(&a, &b, &mut state, dt).unwrap() {
+            Interaction::Touching(c) => c.normal_force,
+            Interaction::Apart => 0.0,
+        }
+    };
+    for overlap in [1e-7, 1e-6, 5e-6] {
+        let work = simpson(force, overlap, 2000);
+        let stored = law.stored_energy(overlap, RADIUS / 2.0, &MindlinSpring::default());
+        assert!(
+            (stored - work).abs() < 1e-6 * work,
+            "overlap {overlap:e}: stored {stored:e} J, work {work:e} J"
+        );
+    }
+}
+
+/// Drives a contact's tangential spring quasi-statically (a tiny slip, no dashpot, no sliding)
+/// and returns the work done against it and the energy the law says it stores.
+fn tangential_work<L: Law<Float = f64>>(law: &L, overlap: f64) -> (f64, f64) {
+    let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
+    let b = Sphere {
+        position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
+        velocity: Vec3::new(0.0, 1e-4, 0.0),
+        ..a
+    };
+    let dt = law.time_step(1e-7, a.mass / 2.0).unwrap();
+    let mut bound = law.at(dt);
+    let (checked_a, checked_b) = (
+        soft_sphere::CheckedSphere::new(a).unwrap(),
+        soft_sphere::CheckedSphere::new(b).unwrap(),
+    );
+    let mut state = L::State::default();
+    let mut work = 0.0;
+    for _ in 0..10_000 {
+        let Interaction::Touching(c) = bound
+            .sphere_sphere(&checked_a, &checked_b, &mut state)
+            .unwrap()
+        else {
+            panic!("the spheres stay pressed together");
+        };
+        assert!(!c.sliding);
+        // The spheres' motion against the spring: work done on the contact.
+        work -= c.tangential_force.dot(c.slip_velocity) * dt.seconds();
+    }
+    (
+        work,
+        law.stored_energy(overlap, RADIUS / 2.0, &state)
+            - law.stored_energy(overlap, RADIUS / 2.0, &L::State::default()),
+    )
+}
+
+#[test]
+fn tangential_springs_store_the_work_done_against_them() {
+    // No tangential dashpot, friction far above what the spring reaches.
+    let aa: Linear = ContactLaw::new(
+        LinearSpringDashpot::new(1000.0, 1.0).unwrap(),
+        ModelAA(TangentialParameters::new(285.7, 0.0, 10.0).unwrap()),
+    );
+    let impact = HertzImpact {
+        speed: 1.0,
+        effective_radius: RADIUS / 2.0,
+    };
+    let mindlin = ContactLaw::new(
+        Hertz::new(5.0e8, 1.0, impact).unwrap(),
+        MindlinAA(MindlinParameters::new(2.0e8, 0.0, 10.0).unwrap()),
+    );
+    // 10,000 steps of the discrete spring: the work of the updated spring exceeds the stored
+    // energy by 1/N.
+    for (name, (work, stored)) in [
+        ("model_aa", tangential_work(&aa, 1e-6)),
+        ("mindlin_aa", tangential_work(&mindlin, 1e-6)),
+    ] {
+        assert!(stored > 0.0, "{name}");
+        assert!(
+            (work - stored).abs() < 2e-4 * stored,
+            "{name}: work {work:e} J, stored {stored:e} J"
+        );
+    }
+    // A relaxed state stores nothing; the normal spring alone is k delta^2 / 2.
+    let state = SpringDisplacement::default();
+    assert_eq!(aa.stored_energy(2e-6, 1.0, &state), 0.5 * 1000.0 * 4e-12);
+    assert_eq!(aa.stored_energy(0.0, 1.0, &state), 0.0);
+}
+
+/// A 6 mm box, periodic in x and y, room above.
+fn open_box() -> Domain<f64> {
+    Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(0.006, 0.006, 0.006),
+        periodic_x: true,
+        periodic_y: true,
+    }
+}
+
+/// The account at the end of each step of `steps` of `scene`.
+fn accounts<L: Law<Float = f64>, W: soft_sphere_scene::WallSet<f64> + Clone, const M: usize>(
+    scene: &mut OwnedScene<L, W>,
+    input: &StepInput<'_, L, M>,
+    steps: usize,
+) -> Vec<Energy<f64>> {
+    let mut energies = Vec::with_capacity(steps);
+    scene
+        .run(input, steps, |_, stats| {
+            energies.push(stats.energy.unwrap())
+        })
+        .unwrap();
+    energies
+}
+
+#[test]
+fn a_head_on_impact_dissipates_one_minus_e_squared_of_its_relative_kinetic_energy() {
+    let speed = 0.1;
+    for restitution in [0.3, 0.6, 0.9] {
+        let law = linear(restitution, 0.4);
+        let table = MaterialTable::<_, 1>::uniform(law);
+        let mut a = Sphere::solid(Vec3::new(2.0e-3, 3e-3, 3e-3), RADIUS, DENSITY);
+        let mut b = Sphere::solid(Vec3::new(3.1e-3, 3e-3, 3e-3), RADIUS, DENSITY);
+        a.velocity.x = speed / 2.0;
+        b.velocity.x = -speed / 2.0;
+        let m = effective_mass(a.mass, b.mass);
+        let duration = law.contact_duration(m);
+        let dt = duration / 1000.0;
+        let mut scene =
+            OwnedScene::<_, _>::new(vec![a, b], open_box(), (2.0 * RADIUS, 1e-4), NoWalls)
+                .unwrap()
+                .with_records();
+        let input = StepInput {
+            table: &table,
+            gravity: Vec3::ZERO,
+            time_step: scene.scene(|s| s.time_step(&table, dt)).unwrap().unwrap(),
+            integrator: Integrator::VelocityVerlet,
+        };
+        // 0.1 mm to close at 0.1 m/s, then the contact.
+        let steps = ((1e-4 / speed + 2.0 * duration) / dt) as usize;
+        let energies = accounts(&mut scene, &input, steps);
+        let last = energies.last().unwrap();
+        let expected = (1.0 - restitution * restitution) * 0.5 * m * speed * speed;
+        assert!(last.stored == 0.0, "the contact has ended");
+        assert!(
+            (last.dissipated_dashpots - expected).abs() < 0.005 * expected,
+            "e = {restitution}: {:e} J dissipated, (1 - e^2) m* v^2 / 2 = {expected:e} J",
+            last.dissipated_dashpots
+        );
+        assert_eq!(last.dissipated_sliding, 0.0, "head on: nothing slides");
+        let drift = (last.balance() - energies[0].balance()).abs();
+        assert!(
+            drift < 1e-3 * expected,
+            "e = {restitution}: balance drifted {drift:e} J"
+        );
+    }
+}
+
+#[test]
+fn a_sphere_sliding_on_a_floor_loses_two_sevenths_of_its_kinetic_energy_to_the_slider() {
+    let friction = 0.3;
+    let law = linear(0.5, friction);
+    let table = MaterialTable::<_, 1>::uniform(law);
+    let g = 9.81;
+    let v0 = 0.05;
+    let floor = [MaterialWall {
+        wall: Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        material: 0,
+    }];
+    let mut sphere = Sphere::solid(Vec3::new(1e-3, 3e-3, 0.0), RADIUS, DENSITY);
+    // Resting at its static overlap, moving along x without spin.
+    sphere.position.z = RADIUS - sphere.mass * g / 1000.0;
+    sphere.velocity.x = v0;
+    let kinetic = 0.5 * sphere.mass * v0 * v0;
+    let mut scene = OwnedScene::<_, _>::new(vec![sphere], open_box(), (2.0 * RADIUS, 1e-4), floor)
+        .unwrap()
+        .with_records();
+    let dt = 2e-6;
+    let input = StepInput {
+        table: &table,
+        gravity: Vec3::new(0.0, 0.0, -g),
+        time_step: scene.scene(|s| s.time_step(&table, dt)).unwrap().unwrap(),
+        integrator: Integrator::SymplecticEuler,
+    };
+    // Sliding lasts 2 v0 / (7 mu g); run twice that.
+    let steps = (4.0 * v0 / (7.0 * friction * g) / dt) as usize;
+    let energies = accounts(&mut scene, &input, steps);
+    let last = energies.last().unwrap();
+    let expected = 2.0 / 7.0 * kinetic;
+    assert!(
+        (last.dissipated_sliding - expected).abs() < 0.02 * expected,
+        "{:e} J to the slider, 2/7 of {kinetic:e} J = {expected:e} J",
+        last.dissipated_sliding
+    );
+    let drift = (last.balance() - energies[0].balance()).abs();
+    assert!(drift < 0.01 * expected, "balance drifted {drift:e} J");
+}
+
+/// A pour of 150 spheres with random velocities in a 6 mm periodic box over a floor, under
+/// `table` (spheres material 0, the floor 1) for `seconds` at step `dt`: every step's account.
+fn pour<L: Law<Float = f64>>(
+    table: &MaterialTable<L, 2>,
+    integrator: Integrator,
+    (dt, seconds): (f64, f64),
+) -> Vec<Energy<f64>> {
+    let column = Column {
+        spheres: 150,
+        diameter: 2.0 * RADIUS,
+        density: DENSITY,
+        width_x: 0.006,
+        width_y: 0.006,
+    };
+    let (mut spheres, height) = column.lattice::<f64>();
+    let mut random = Xorshift::new(17);
+    for s in &mut spheres {
+        s.velocity = Vec3::new(
+            random.unit() - 0.5,
+            random.unit() - 0.5,
+            random.unit() - 0.5,
+        ) * 0.1;
+        s.position.z *= 0.9;
+    }
+    let mass = spheres[0].mass;
+    let floor = [wall_of(
+        Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+        1,
+    )];
+    let mut scene =
+        OwnedScene::<_, _>::new(spheres, column.domain(height), (2.0 * RADIUS, 1e-4), floor)
+            .unwrap()
+            .with_records();
+    let input = StepInput {
+        table,
+        gravity: Vec3::new(0.0, 0.0, -9.81),
+        time_step: table.law(0, 0).unwrap().time_step(dt, mass / 2.0).unwrap(),
+        integrator,
+    };
+    accounts(&mut scene, &input, (seconds / dt) as usize)
+}
+
+#[test]
+fn the_balance_of_a_settling_bed_closes_to_rounding() {
+    let table = pair_and_wall(linear(0.5, 0.5), linear(0.6, 0.3));
+    for integrator in Integrator::ALL {
+        let energies = pour(&table, integrator, (4e-6, 0.04));
+        let last = energies.last().unwrap();
+        let dissipated = last.dissipated_dashpots + last.dissipated_sliding;
+        // The pour fell, collided and slid: both sinks took energy, and most of what gravity
+        // gave.
+        assert!(last.gravity_work > 0.0 && last.wall_work == 0.0);
+        assert!(last.dissipated_dashpots > 0.0 && last.dissipated_sliding > 0.0);
+        assert!(dissipated > 0.5 * last.gravity_work, "{last:?}");
+        let start = energies[0].balance();
+        for (step, energy) in energies.iter().enumerate() {
+            let drift = (energy.balance() - start).abs();
+            assert!(
+                drift < 1e-9 * dissipated,
+                "{integrator:?} step {step}: the balance moved {drift:e} J of {dissipated:e} J"
+            );
+        }
+    }
+}
+
+/// The largest dissipation an elastic pour reports at step `dt`, over the energy in play (the
+/// pour's kinetic energy and what gravity gave), and how much its springs held at most.
+fn elastic_pour(integrator: Integrator, dt: f64) -> (f64, f64) {
+    // No dashpots, no friction: every contact is a spring.
+    let elastic = ContactLaw::new(
+        LinearSpringDashpot::new(1000.0, 1.0).unwrap(),
+        ModelAA(TangentialParameters::new(285.7, 0.0, 0.0).unwrap()),
+    );
+    let table = pair_and_wall(elastic, elastic);
+    let energies = pour(&table, integrator, (dt, 0.02));
+    let scale =
+        energies[0].kinetic + energies[0].rotational + energies.last().unwrap().gravity_work;
+    let mut worst: f64 = 0.0;
+    for energy in &energies {
+        assert!(
+            energy.dissipated_sliding.abs() < 1e-12 * scale,
+            "nothing slides"
+        );
+        worst = worst.max((energy.dissipated_dashpots + energy.dissipated_sliding).abs());
+    }
+    let held = energies.iter().map(|e| e.stored).fold(0.0, f64::max);
+    (worst / scale, held / scale)
+}
+
+#[test]
+fn an_elastic_gas_dissipates_nothing() {
+    // What the account calls dissipated in an elastic gas is the integrator's energy error:
+    // bounded, and falling with the step (measured: symplectic Euler 4.0e-3 at 4 us, 2.1e-3
+    // at 2 us; velocity Verlet 4.1e-4, 1.3e-4).
+    for (integrator, bound) in [
+        (Integrator::SymplecticEuler, 8e-3),
+        (Integrator::VelocityVerlet, 1e-3),
+    ] {
+        let (coarse, held) = elastic_pour(integrator, 4e-6);
+        let (fine, _) = elastic_pour(integrator, 2e-6);
+        assert!(held > 1e-4, "the spheres collided");
+        assert!(
+            coarse < bound,
+            "{integrator:?}: {coarse:e} of the energy in play"
+        );
+        assert!(
+            fine < 0.7 * coarse,
+            "{integrator:?}: {coarse:e} at 4 us, {fine:e} at 2 us"
+        );
+    }
+}
