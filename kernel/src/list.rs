@@ -247,21 +247,30 @@ impl core::error::Error for ListError {}
 fn check_spheres<F: Float, const M: usize>(
     spheres: &impl Spheres<F>,
 ) -> Result<[Option<F>; M], ListError> {
-    spheres.check_lengths()?;
+    check_materials::<F, M>(spheres)?;
     let mut lightest = [None; M];
     for k in 0..spheres.len() {
-        let material = spheres.material(k);
-        let Some(slot) = lightest.get_mut(material as usize) else {
-            return Err(ListError::Material {
-                sphere: k,
-                material,
-            });
-        };
-        spheres.check(k)?;
+        let slot = &mut lightest[spheres.material(k) as usize];
         let mass = spheres.sphere(k).mass;
         *slot = Some(slot.map_or(mass, |m: F| m.min_of(mass)));
     }
     Ok(lightest)
+}
+
+/// Checks the spheres as [`check_spheres`] does, without the masses an evaluation does not need.
+fn check_materials<F: Float, const M: usize>(spheres: &impl Spheres<F>) -> Result<(), ListError> {
+    spheres.check_lengths()?;
+    for k in 0..spheres.len() {
+        let material = spheres.material(k);
+        if material as usize >= M {
+            return Err(ListError::Material {
+                sphere: k,
+                material,
+            });
+        }
+        spheres.check(k)?;
+    }
+    Ok(())
 }
 
 fn check_walls<F, const M: usize>(walls: &[MaterialWall<F>]) -> Result<(), ListError> {
@@ -463,7 +472,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         if let Some(&(_, _, array)) = lengths.iter().find(|(got, wanted, _)| got != wanted) {
             return Err(ListError::Length(array));
         }
-        check_spheres::<_, M>(spheres)?;
+        check_materials::<_, M>(spheres)?;
         check_walls::<_, M>(walls)?;
         if let Some(pair) = pairs
             .iter()
@@ -475,7 +484,6 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             return Err(ListError::Shift { pair });
         }
         let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
-        saved_pairs.copy_from_slice(list.pair_states);
         saved_walls.copy_from_slice(list.wall_states);
         let (saved_force, saved_torque) = out.backup.loads.split_at_mut(n);
         saved_force.copy_from_slice(out.force);
@@ -492,22 +500,19 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         let outcome = evaluate_pairs(
             spheres,
             (pairs, shifts),
-            &mut *list.pair_states,
+            (&mut *list.pair_states, &mut *saved_pairs),
             &mut bound,
             &mut sink,
             blocks,
         )
         .and_then(|()| {
-            evaluate_walls(
-                spheres,
-                (walls, &mut *list.wall_states),
-                &mut bound,
-                &mut sink,
-                pairs.len(),
-            )
+            let walls = (walls, &mut *list.wall_states);
+            evaluate_walls(spheres, walls, &mut bound, &mut sink, pairs.len())
+                .map_err(|error| (error, pairs.len()))
         });
-        if let Err(error) = outcome {
-            list.pair_states.copy_from_slice(saved_pairs);
+        if let Err((error, copied)) = outcome {
+            // Only the pairs whose states were copied can have changed.
+            list.pair_states[..copied].copy_from_slice(&saved_pairs[..copied]);
             list.wall_states.copy_from_slice(saved_walls);
             sink.force.copy_from_slice(saved_force);
             sink.torque.copy_from_slice(saved_torque);
@@ -585,43 +590,60 @@ const SIFT: usize = 256;
 /// straight after its lanes were stored one by one waits on every load).
 const GROUP: usize = 8;
 
-/// Every pair, chunk by chunk: sifted, evaluated (in blocks or one at a time), and committed in
-/// list order. Stops at the first chunk with a refused pair, naming the first in list order.
+/// Every pair, chunk by chunk: each chunk's states copied into `saved` just before it is
+/// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
+/// committed in list order. Stops at the first chunk with a refused pair, naming the first in
+/// list order, with how many pairs' states it had copied (and may have changed).
 fn evaluate_pairs<L: Law, const M: usize>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
-    states: &mut [L::State],
+    (states, saved): (&mut [L::State], &mut [L::State]),
     bound: &mut [[BoundLaw<'_, L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
     blocks: bool,
-) -> Result<(), ListError> {
+) -> Result<(), (ListError, usize)> {
     let mut staged = Staged::<L::Float, L::State>::new();
-    for (c, (chunk, states)) in pairs.chunks(SIFT).zip(states.chunks_mut(SIFT)).enumerate() {
+    let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
+    for (c, ((chunk, states), saved)) in chunks.zip(saved.chunks_mut(SIFT)).enumerate() {
         let first = c * SIFT;
-        let shifts = shifts.get(first..first + chunk.len()).unwrap_or(&[]);
-        let found = staged.sift(spheres, (chunk, shifts), states);
-        let failed = if blocks {
-            staged.in_blocks(spheres, (chunk, shifts), states, found, bound)
-        } else {
-            staged.one_at_a_time(spheres, (chunk, shifts), states, found, bound)
-        };
-        if let Some((k, error)) = failed {
-            return Err(ListError::Pair {
-                pair: first + k,
-                error,
-            });
+        // Read from the copy, written afresh: a pair apart is left relaxed, as the one-contact
+        // path leaves it, with no branch on the coin toss of touching.
+        saved.copy_from_slice(states);
+        if size_of::<L::State>() > 0 {
+            states.fill(L::State::default());
         }
+        let states = (&mut *states, &*saved);
+        let shifts = shifts.get(first..first + chunk.len()).unwrap_or(&[]);
+        let found = staged.sift(spheres, (chunk, shifts));
         if sink.records.is_some() {
             for k in 0..chunk.len() {
                 sink.record(first + k, Interaction::Apart);
             }
         }
-        for &k in &staged.touching[..found] {
-            let k = usize::from(k);
-            if staged.touches[k] {
-                let pair = chunk[k].map(|x| x as usize);
-                sink.pair(first + k, pair, &staged.forces[k]);
+        let failed = if blocks {
+            let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
+            if failed.is_none() {
+                for &k in &staged.touching[..found] {
+                    let k = usize::from(k);
+                    if staged.touches[k] {
+                        let pair = chunk[k].map(|x| x as usize);
+                        sink.pair(first + k, pair, &staged.forces[k]);
+                    }
+                }
             }
+            failed
+        } else {
+            staged.one_at_a_time(
+                spheres,
+                (chunk, shifts),
+                states,
+                found,
+                (bound, sink, first),
+            )
+        };
+        if let Some((k, error)) = failed {
+            let pair = first + k;
+            return Err((ListError::Pair { pair, error }, first + chunk.len()));
         }
     }
     Ok(())
@@ -686,42 +708,39 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     }
 
     /// The places in `chunk` of the pairs the one-contact path evaluates (overlapping or
-    /// coincident), kept in `touching`; every other pair's state is reset, as that path does
-    /// for pairs apart. Returns how many. Sifting first keeps the coin toss of touching or not
-    /// out of the contact evaluation's branches.
+    /// coincident), kept in `touching`. Returns how many. Sifting first keeps the coin toss of
+    /// touching or not out of the contact evaluation's branches.
     #[inline(always)]
     fn sift(
         &mut self,
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-        states: &mut [S],
     ) -> usize {
         let mut found = 0;
-        for (k, (&[i, j], state)) in chunk.iter().zip(states.iter_mut()).enumerate() {
+        for (k, &[i, j]) in chunk.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
             let separation = Separation::between(
                 (spheres.position(i), spheres.radius(i)),
                 (spheres.position(j) + shift(shifts, k), spheres.radius(j)),
             );
             let evaluate = separation.needs_evaluation();
-            if size_of::<S>() > 0 && !evaluate {
-                *state = S::default();
-            }
             self.touching[found] = k as u16;
             found += usize::from(evaluate);
         }
         found
     }
 
-    /// The sifted pairs one at a time through the one-contact path; returns the first refused.
+    /// The sifted pairs one at a time through the one-contact path, each touching pair committed
+    /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
+    /// forces the caller puts back); returns the first refused.
     #[inline(always)]
     fn one_at_a_time<L: Law<Float = F, State = S>, const M: usize>(
         &mut self,
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-        states: &mut [S],
+        (states, saved): (&mut [S], &[S]),
         found: usize,
-        bound: &mut [[BoundLaw<'_, L>; M]; M],
+        (bound, sink, first): (&mut [[BoundLaw<'_, L>; M]; M], &mut Sink<'_, F>, usize),
     ) -> Option<(usize, ContactError)> {
         for &k in &self.touching[..found] {
             let k = usize::from(k);
@@ -731,14 +750,13 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                 CheckedSphere::trusted(spheres.sphere(i)),
                 CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
             );
-            match law.sphere_sphere(&a, &b, &mut states[k]) {
-                Ok(Interaction::Touching(forces)) => {
-                    self.forces[k] = forces;
-                    self.touches[k] = true;
-                }
-                Ok(Interaction::Apart) => self.touches[k] = false,
+            let mut state = saved[k];
+            match law.sphere_sphere(&a, &b, &mut state) {
+                Ok(Interaction::Touching(forces)) => sink.pair(first + k, [i, j], &forces),
+                Ok(Interaction::Apart) => {}
                 Err(error) => return Some((k, error)),
             }
+            states[k] = state;
         }
         None
     }
@@ -751,7 +769,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         &mut self,
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-        states: &mut [S],
+        (states, saved): (&mut [S], &[S]),
         found: usize,
         bound: &mut [[BoundLaw<'_, L>; M]; M],
     ) -> Option<(usize, ContactError)> {
@@ -796,7 +814,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                                     let [i, j] = chunk[k].map(|x| x as usize);
                                     let j_at = shifted(spheres.sphere(j), shift(shifts, k));
                                     block.set(lane, &spheres.sphere(i), &j_at);
-                                    *state = states[k];
+                                    *state = saved[k];
                                 }
                                 // An unused lane: spheres of no size, refused and ignored.
                                 None => block.set(lane, &Sphere::default(), &Sphere::default()),

@@ -167,6 +167,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         let quarter = <L::Float as Float>::HALF * <L::Float as Float>::HALF;
         let half_skin_squared = self.skin * self.skin * quarter;
         let half_kick = kick * <L::Float as Float>::HALF;
+        // The energy account needs the kicks' work; a scene without records skips it.
+        let book = !self.records.is_empty();
         executor.for_each_mut(&mut pieces, |piece| {
             let Some(piece) = piece else { return };
             let mut memo = KickMemo::new(kick);
@@ -177,14 +179,16 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     memo.get(sphere)
                         .apply(sphere, force + gravity * sphere.mass, torque);
                     // Each force's work as the kick applies it: F . (v + v') h / 2.
-                    let (mean, mean_spin) = (
-                        (velocity + sphere.velocity) * half_kick,
-                        (spin + sphere.angular_velocity) * half_kick,
-                    );
-                    let work = (
-                        force.dot(mean) + torque.dot(mean_spin),
-                        gravity.dot(mean) * sphere.mass,
-                    );
+                    let work = if book {
+                        let mean = (velocity + sphere.velocity) * half_kick;
+                        let mean_spin = (spin + sphere.angular_velocity) * half_kick;
+                        (
+                            force.dot(mean) + torque.dot(mean_spin),
+                            gravity.dot(mean) * sphere.mass,
+                        )
+                    } else {
+                        (L::Float::ZERO, L::Float::ZERO)
+                    };
                     let Some(dt) = drift else {
                         return (false, work);
                     };

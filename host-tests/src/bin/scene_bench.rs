@@ -7,8 +7,10 @@
 //!
 //! Usage: `cargo run --release -p host-tests --bin scene_bench -- [--spheres 10000|50000]
 //! [--steps 10000] [--repeat 3] [--integrator euler|verlet] [--variant full|frictionless|
-//! non-rotating|undamped|no-walls] [--threads N] [--lammps DIR]`. Without `--threads` the step is
-//! the kernel's serial one; with it, a rayon pool of N threads (the same bits).
+//! non-rotating|undamped|no-walls|mixture] [--threads N] [--lammps DIR]`. Without `--threads`
+//! the step is the scene's serial one; with it, the integration is spread over a rayon pool of
+//! N threads (the same bits). `mixture` makes half the spheres a second material, twice as
+//! stiff with 0.6 of the friction.
 
 use std::error::Error;
 use std::path::PathBuf;
@@ -19,8 +21,8 @@ use host_tests::scene::{
     wall_restitution_for_same_dashpot, write_lammps_data,
 };
 use soft_sphere::{
-    ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, MaterialWall, ModelAA,
-    Sphere, Std, TangentialParameters, Vec3, Wall,
+    ContactLaw, Frictionless, Law, LinearMaterial, LinearMixing, LinearSpring, LinearSpringDashpot,
+    MaterialTable, MaterialWall, ModelAA, Sphere, Std, TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{Integrator, NoWalls, StepInput, StepStats, WallSet};
 
@@ -166,11 +168,11 @@ struct Measured {
     batches: bool,
 }
 
-fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
+fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
     o: &Options,
-    spheres: &[Sphere<f64>],
+    (spheres, materials): (&[Sphere<f64>], &[u32]),
     height: f64,
-    input: &StepInput<'_, L, 2>,
+    input: &StepInput<'_, L, M>,
     walls: &W,
 ) -> Result<Measured, Box<dyn Error>> {
     let mut seconds = Vec::new();
@@ -182,7 +184,8 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
             o.column.domain(height),
             (o.column.diameter, SKIN),
             walls.clone(),
-        )?;
+        )?
+        .with_materials(materials.to_vec())?;
         let mut stats = Default::default();
         let (mut touching, mut sliding) = (0usize, 0usize);
         let record = |_: usize, s: &StepStats<f64>| {
@@ -225,7 +228,8 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     })
 }
 
-/// Times the pair law and the wall law of one variant.
+/// Times the pair law and the wall law of one variant (every sphere of material 0, the floor
+/// of material 1).
 fn run_variant<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
     o: &Options,
     spheres: &[Sphere<f64>],
@@ -241,7 +245,59 @@ fn run_variant<L: Law<Float = f64>, W: WallSet<f64> + Clone>(
         time_step,
         integrator: o.integrator,
     };
-    time_runs(o, spheres, height, &input, walls)
+    let materials = vec![0; spheres.len()];
+    time_runs(o, (spheres, &materials), height, &input, walls)
+}
+
+/// The reference scene as a binary mixture: half the spheres (at random) of a second material
+/// twice as stiff with 0.6 of the friction, pairs mixed by geometric means, the floor a third
+/// material with the reference wall law's stiffness and restitution.
+fn run_mixture(
+    o: &Options,
+    spheres: &[Sphere<f64>],
+    height: f64,
+    wall_e: f64,
+) -> Result<Measured, Box<dyn Error>> {
+    let first = LinearMaterial {
+        normal_stiffness: NORMAL_STIFFNESS,
+        restitution: RESTITUTION,
+        tangential_stiffness: 2.0 / 7.0 * NORMAL_STIFFNESS,
+        dashpot_ratio: DASHPOT_RATIO,
+        friction: FRICTION,
+    };
+    let second = LinearMaterial {
+        normal_stiffness: 2.0 * NORMAL_STIFFNESS,
+        tangential_stiffness: 4.0 / 7.0 * NORMAL_STIFFNESS,
+        friction: 0.6 * FRICTION,
+        ..first
+    };
+    let floor_material = LinearMaterial {
+        restitution: wall_e,
+        ..first
+    };
+    let mixing = LinearMixing::new(ModelAA).with_backend::<Std>();
+    let table = MaterialTable::<_, 3>::mixed(&mixing, &[first, second, floor_material])?;
+    let mut random = host_tests::random::Xorshift::new(0x5eed);
+    let materials: Vec<u32> = spheres
+        .iter()
+        .map(|_| u32::from(random.unit() < 0.5))
+        .collect();
+    let walls = [wall_of(Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?, 2)];
+    let mut probe = OwnedScene::new(
+        spheres.to_vec(),
+        o.column.domain(height),
+        (o.column.diameter, SKIN),
+        walls,
+    )?
+    .with_materials(materials.clone())?;
+    let time_step = probe.scene(|s| s.time_step(&table, TIME_STEP))??;
+    let input = StepInput {
+        table: &table,
+        gravity: Vec3::new(0.0, 0.0, -GRAVITY),
+        time_step,
+        integrator: o.integrator,
+    };
+    time_runs(o, (spheres, &materials), height, &input, &walls)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -333,6 +389,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             ),
             &NoWalls,
         )?,
+        "mixture" => run_mixture(&o, &spheres, height, wall_e)?,
         other => return Err(format!("unknown variant {other}").into()),
     };
     let n = spheres.len() as f64;
