@@ -151,8 +151,10 @@
 //!
 //! A whole problem at once: a [`MaterialTable`] holds one law per pair of materials (mixed from
 //! each material's properties by a [`Mixing`] rule, any pair overridable), and
-//! [`MaterialTable::evaluate`] takes an engine's own arrays ([`SphereArrays`]), its pair list and
+//! [`MaterialTable::evaluate`] takes an engine's own spheres (as arrays, [`SphereArrays`], or one
+//! array of checked spheres, [`SphereSlice`]), its pair list with any periodic shifts and its
 //! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
+//! [`ContactLaw::stored_energy`] says what a contact's springs hold, for energy accounts.
 //!
 //! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `N` pairs given as
 //! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers. It pays

@@ -120,15 +120,15 @@ pub struct ListStats<F> {
 /// One of the arrays an evaluation is given.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ListArray {
-    /// [`SphereArrays::velocity`].
+    /// [`SphereArrays::velocity`](crate::SphereArrays::velocity).
     Velocity,
-    /// [`SphereArrays::angular_velocity`].
+    /// [`SphereArrays::angular_velocity`](crate::SphereArrays::angular_velocity).
     AngularVelocity,
-    /// [`SphereArrays::radius`].
+    /// [`SphereArrays::radius`](crate::SphereArrays::radius).
     Radius,
-    /// [`SphereArrays::mass`].
+    /// [`SphereArrays::mass`](crate::SphereArrays::mass).
     Mass,
-    /// [`SphereArrays::material`].
+    /// [`SphereArrays::material`](crate::SphereArrays::material).
     Material,
     /// [`ContactList::shifts`] (none, or one per pair).
     Shifts,

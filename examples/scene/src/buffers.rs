@@ -9,21 +9,21 @@ use crate::parking::Parking;
 /// The lengths a scene's buffers must have, from [`Scene::buffer_sizes`](crate::Scene::buffer_sizes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BufferSizes {
-    /// [`SceneBuffers::cells`]: one per grid cell, plus one, plus one per sphere.
+    /// The length of [`SceneBuffers::cells`]: one per grid cell, plus one, plus one per sphere.
     pub cells: usize,
-    /// [`SceneBuffers::pairs`]: the Verlet list's capacity (about 4.5 per sphere in a dense
+    /// The length of [`SceneBuffers::pairs`]: the Verlet list's capacity (about 4.5 per sphere in a dense
     /// monodisperse packing with a skin of a tenth of a diameter).
     pub pairs: usize,
-    /// [`SceneBuffers::vectors`]: one per list place (its periodic shift) and five per sphere
+    /// The length of [`SceneBuffers::vectors`]: one per list place (its periodic shift) and five per sphere
     /// (force, torque, position at the last list build, and the force and torque a refused
     /// step puts back).
     pub vectors: usize,
-    /// [`SceneBuffers::states`]: twice (the states, and their copy a refused step puts back)
+    /// The length of [`SceneBuffers::states`]: twice (the states, and their copy a refused step puts back)
     /// one per list place and one per sphere and wall.
     pub states: usize,
-    /// [`SceneBuffers::parking`]: one per sphere, or none for a law that stores nothing.
+    /// The length of [`SceneBuffers::parking`]: one per sphere, or none for a law that stores nothing.
     pub parking: usize,
-    /// [`SceneBuffers::records`]: one per list place and per sphere and wall when the scene
+    /// The length of [`SceneBuffers::records`]: one per list place and per sphere and wall when the scene
     /// keeps each contact's outcome (its per-contact view and energy accounting), else none.
     pub records: usize,
 }
