@@ -9,9 +9,9 @@
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, pair_and_wall, wall_of};
 use soft_sphere::{
-    ContactLaw, Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot, MaterialTable,
-    MaterialWall, MindlinAA, MindlinParameters, MindlinSpring, ModelAA, Sphere, SpringDisplacement,
-    TangentialParameters, Vec3, Wall, effective_mass,
+    ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot,
+    MaterialTable, MaterialWall, MindlinAA, MindlinParameters, MindlinSpring, ModelAA, Sphere,
+    SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
 };
 use soft_sphere_scene::{Domain, Energy, Integrator, NoWalls, StepInput};
 
@@ -137,6 +137,56 @@ fn tangential_springs_store_the_work_done_against_them() {
     let state = SpringDisplacement::default();
     assert_eq!(aa.stored_energy(2e-6, 1.0, &state), 0.5 * 1000.0 * 4e-12);
     assert_eq!(aa.stored_energy(0.0, 1.0, &state), 0.0);
+}
+
+#[test]
+fn a_rolling_spring_stores_the_work_done_against_it() {
+    // Sphere j turns slowly about an axis in the tangent plane: the contact's tangential and
+    // rolling springs both load (no dashpots, friction far above what they reach).
+    let law = ContactLaw::new(
+        LinearSpringDashpot::new(1000.0, 1.0).unwrap(),
+        ModelAA(TangentialParameters::new(285.7, 0.0, 10.0).unwrap()),
+    )
+    .with_rolling(ElasticPlasticRolling::new(10.0, 1e-4, 0.0, 1e-13).unwrap());
+    let overlap = 1e-6;
+    let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
+    let b = Sphere {
+        position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
+        angular_velocity: Vec3::new(0.0, 0.0, 0.05),
+        ..a
+    };
+    let dt = law.time_step(1e-7, a.mass / 2.0).unwrap();
+    let mut bound = law.at(dt);
+    let (checked_a, checked_b) = (
+        soft_sphere::CheckedSphere::new(a).unwrap(),
+        soft_sphere::CheckedSphere::new(b).unwrap(),
+    );
+    let mut state = Default::default();
+    let mut work = 0.0;
+    for _ in 0..10_000 {
+        let Interaction::Touching(c) = bound
+            .sphere_sphere(&checked_a, &checked_b, &mut state)
+            .unwrap()
+        else {
+            panic!("the spheres stay pressed together");
+        };
+        assert!(!c.sliding);
+        // The power the contact takes from the spheres: its force on j against j's velocity
+        // relative to i (none here) and its torques against the spins.
+        let power = c.torque_on_i.dot(a.angular_velocity) + c.torque_on_j.dot(b.angular_velocity);
+        work -= power * dt.seconds();
+    }
+    let springs = law.stored_energy(overlap, RADIUS / 2.0, &state)
+        - law.stored_energy(overlap, RADIUS / 2.0, &Default::default());
+    let rolling = state.torque.norm_squared() / (2.0 * 1e-4);
+    assert!(
+        rolling > 0.1 * springs,
+        "the rolling spring took {rolling:e} of {springs:e} J"
+    );
+    assert!(
+        (work - springs).abs() < 2e-4 * springs,
+        "work {work:e} J, stored {springs:e} J"
+    );
 }
 
 /// A 6 mm box, periodic in x and y, room above.
