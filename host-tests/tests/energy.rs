@@ -71,13 +71,19 @@ fn a_hertz_spring_stores_the_work_of_its_elastic_force() {
     }
 }
 
-/// Drives a contact's tangential spring quasi-statically (a tiny slip, no dashpot, no sliding)
-/// and returns the work done against it and the energy the law says it stores.
-fn tangential_work<L: Law<Float = f64>>(law: &L, overlap: f64) -> (f64, f64) {
+/// Drives a contact quasi-statically (sphere j, pressed `overlap` into sphere i along x, moves
+/// with `velocity` and turns with `spin`; no dashpot, no sliding) and returns the work done
+/// against the contact and what the law says its tangential and rolling springs store.
+fn spring_work<L: Law<Float = f64>>(
+    law: &L,
+    overlap: f64,
+    (velocity, spin): (Vec3<f64>, Vec3<f64>),
+) -> (f64, f64) {
     let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
     let b = Sphere {
         position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
-        velocity: Vec3::new(0.0, 1e-4, 0.0),
+        velocity,
+        angular_velocity: spin,
         ..a
     };
     let dt = law.time_step(1e-7, a.mass / 2.0).unwrap();
@@ -96,14 +102,23 @@ fn tangential_work<L: Law<Float = f64>>(law: &L, overlap: f64) -> (f64, f64) {
             panic!("the spheres stay pressed together");
         };
         assert!(!c.sliding);
-        // The spheres' motion against the spring: work done on the contact.
-        work -= c.tangential_force.dot(c.slip_velocity) * dt.seconds();
+        // The power the contact takes from the spheres: its force on j against j's velocity
+        // relative to i, its torques against the spins.
+        let power = c.force_on_j().dot(b.velocity - a.velocity)
+            + c.torque_on_i.dot(a.angular_velocity)
+            + c.torque_on_j.dot(b.angular_velocity);
+        work -= power * dt.seconds();
     }
-    (
-        work,
-        law.stored_energy(overlap, RADIUS / 2.0, &state)
-            - law.stored_energy(overlap, RADIUS / 2.0, &L::State::default()),
-    )
+    let radius = RADIUS / 2.0;
+    let relaxed = L::State::default();
+    let springs =
+        law.stored_energy(overlap, radius, &state) - law.stored_energy(overlap, radius, &relaxed);
+    (work, springs)
+}
+
+/// j sliding past i in y at 0.1 mm/s.
+fn sliding_past<L: Law<Float = f64>>(law: &L, overlap: f64) -> (f64, f64) {
+    spring_work(law, overlap, (Vec3::new(0.0, 1e-4, 0.0), Vec3::ZERO))
 }
 
 #[test]
@@ -124,8 +139,8 @@ fn tangential_springs_store_the_work_done_against_them() {
     // 10,000 steps of the discrete spring: the work of the updated spring exceeds the stored
     // energy by 1/N.
     for (name, (work, stored)) in [
-        ("model_aa", tangential_work(&aa, 1e-6)),
-        ("mindlin_aa", tangential_work(&mindlin, 1e-6)),
+        ("model_aa", sliding_past(&aa, 1e-6)),
+        ("mindlin_aa", sliding_past(&mindlin, 1e-6)),
     ] {
         assert!(stored > 0.0, "{name}");
         assert!(
@@ -143,44 +158,20 @@ fn tangential_springs_store_the_work_done_against_them() {
 fn a_rolling_spring_stores_the_work_done_against_it() {
     // Sphere j turns slowly about an axis in the tangent plane: the contact's tangential and
     // rolling springs both load (no dashpots, friction far above what they reach).
+    let stiffness = 1e-4;
     let law = ContactLaw::new(
         LinearSpringDashpot::new(1000.0, 1.0).unwrap(),
         ModelAA(TangentialParameters::new(285.7, 0.0, 10.0).unwrap()),
     )
-    .with_rolling(ElasticPlasticRolling::new(10.0, 1e-4, 0.0, 1e-13).unwrap());
-    let overlap = 1e-6;
-    let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
-    let b = Sphere {
-        position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
-        angular_velocity: Vec3::new(0.0, 0.0, 0.05),
-        ..a
-    };
-    let dt = law.time_step(1e-7, a.mass / 2.0).unwrap();
-    let mut bound = law.at(dt);
-    let (checked_a, checked_b) = (
-        soft_sphere::CheckedSphere::new(a).unwrap(),
-        soft_sphere::CheckedSphere::new(b).unwrap(),
-    );
-    let mut state = Default::default();
-    let mut work = 0.0;
-    for _ in 0..10_000 {
-        let Interaction::Touching(c) = bound
-            .sphere_sphere(&checked_a, &checked_b, &mut state)
-            .unwrap()
-        else {
-            panic!("the spheres stay pressed together");
-        };
-        assert!(!c.sliding);
-        // The power the contact takes from the spheres: its force on j against j's velocity
-        // relative to i (none here) and its torques against the spins.
-        let power = c.torque_on_i.dot(a.angular_velocity) + c.torque_on_j.dot(b.angular_velocity);
-        work -= power * dt.seconds();
-    }
-    let springs = law.stored_energy(overlap, RADIUS / 2.0, &state)
-        - law.stored_energy(overlap, RADIUS / 2.0, &Default::default());
-    let rolling = state.torque.norm_squared() / (2.0 * 1e-4);
+    .with_rolling(ElasticPlasticRolling::new(10.0, stiffness, 0.0, 1e-13).unwrap());
+    let spin = 0.05;
+    let (work, springs) = spring_work(&law, 1e-6, (Vec3::ZERO, Vec3::new(0.0, 0.0, spin)));
+    // The rolling spring's share: `|M|^2 / (2 k_r)` with `|M| = k_r w t`, the spheres turning
+    // against each other at `w` for `t` = 10,000 steps of 0.1 us.
+    let turned = spin * 10_000.0 * 1e-7;
+    let rolling = 0.5 * stiffness * turned * turned;
     assert!(
-        rolling > 0.1 * springs,
+        rolling > 0.1 * springs && rolling < springs,
         "the rolling spring took {rolling:e} of {springs:e} J"
     );
     assert!(

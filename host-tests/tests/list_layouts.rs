@@ -44,6 +44,14 @@ struct Gas {
 }
 
 impl Gas {
+    /// The spheres, checked.
+    fn checked(&self) -> Vec<CheckedSphere<f64>> {
+        self.spheres
+            .iter()
+            .map(|s| CheckedSphere::new(*s).unwrap())
+            .collect()
+    }
+
     fn new(count: usize, seed: u64) -> Self {
         let mut random = Xorshift::new(seed);
         let mut spheres = Vec::new();
@@ -164,11 +172,7 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
         mass: &mass,
         material: &gas.materials,
     };
-    let checked: Vec<_> = gas
-        .spheres
-        .iter()
-        .map(|s| CheckedSphere::new(*s).unwrap())
-        .collect();
+    let checked = gas.checked();
     let slice = SphereSlice {
         spheres: &checked,
         material: &gas.materials,
@@ -222,11 +226,7 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
 fn bad_shifts_and_material_arrays_are_refused_with_their_place() {
     let table = table();
     let gas = Gas::new(40, 8);
-    let checked: Vec<_> = gas
-        .spheres
-        .iter()
-        .map(|s| CheckedSphere::new(*s).unwrap())
-        .collect();
+    let checked = gas.checked();
     let slice = SphereSlice {
         spheres: &checked,
         material: &gas.materials,
