@@ -9,9 +9,9 @@
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, pair_and_wall, wall_of};
 use soft_sphere::{
-    ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot,
-    MaterialTable, MaterialWall, MindlinAA, MindlinParameters, MindlinSpring, ModelAA, Sphere,
-    SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
+    ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearSpring,
+    LinearSpringDashpot, MaterialTable, MaterialWall, MindlinAA, MindlinParameters, ModelAA,
+    Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
 };
 use soft_sphere_scene::{Domain, Energy, Integrator, NoWalls, StepInput};
 
@@ -36,39 +36,55 @@ fn simpson(f: impl Fn(f64) -> f64, end: f64, n: usize) -> f64 {
     (f(0.0) + inner + f(end)) * h / 3.0
 }
 
-#[test]
-fn a_hertz_spring_stores_the_work_of_its_elastic_force() {
-    // No dashpot (e = 1): at rest the normal force is the elastic force alone.
-    let impact = HertzImpact {
-        speed: 1.0,
-        effective_radius: RADIUS / 2.0,
-    };
-    let law = ContactLaw::new(
-        Hertz::new(5.0e8, 1.0, impact).unwrap(),
-        MindlinAA(MindlinParameters::new(2.0e8, 0.5, 0.4).unwrap()),
-    );
+/// The work of `law`'s normal force on spheres at rest pressed together from first touch to
+/// each of `overlaps`, against the energy the law says its normal spring then stores.
+fn normal_work<L: Law<Float = f64>>(law: &L, overlaps: &[f64]) {
     let a = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
-    let m = effective_mass(a.mass, a.mass);
-    let dt = law.time_step(1e-9, m).unwrap();
+    let dt = law.time_step(1e-9, effective_mass(a.mass, a.mass)).unwrap();
     let force = |overlap: f64| {
         let b = Sphere {
             position: Vec3::new(2.0 * RADIUS - overlap, 0.0, 0.0),
             ..a
         };
-        let mut state = MindlinSpring::default();
-        match law.sphere_sphere(&a, &b, &mut state, dt).unwrap() {
+        let mut state = L::State::default();
+        let (i, j) = (
+            soft_sphere::CheckedSphere::new(a).unwrap(),
+            soft_sphere::CheckedSphere::new(b).unwrap(),
+        );
+        match law.at(dt).sphere_sphere(&i, &j, &mut state).unwrap() {
             Interaction::Touching(c) => c.normal_force,
             Interaction::Apart => 0.0,
         }
     };
-    for overlap in [1e-7, 1e-6, 5e-6] {
+    for &overlap in overlaps {
         let work = simpson(force, overlap, 2000);
-        let stored = law.stored_energy(overlap, RADIUS / 2.0, &MindlinSpring::default());
+        let stored = law.stored_energy(overlap, RADIUS / 2.0, &L::State::default());
         assert!(
             (stored - work).abs() < 1e-6 * work,
             "overlap {overlap:e}: stored {stored:e} J, work {work:e} J"
         );
     }
+}
+
+#[test]
+fn normal_springs_store_the_work_of_their_elastic_force() {
+    // No dashpot (e = 1, or none at all): at rest the normal force is the elastic force alone.
+    let impact = HertzImpact {
+        speed: 1.0,
+        effective_radius: RADIUS / 2.0,
+    };
+    let hertz = ContactLaw::new(
+        Hertz::new(5.0e8, 1.0, impact).unwrap(),
+        MindlinAA(MindlinParameters::new(2.0e8, 0.5, 0.4).unwrap()),
+    );
+    normal_work(&hertz, &[1e-7, 1e-6, 5e-6]);
+    let tangential = ModelAA(TangentialParameters::new(285.7, 0.5, 0.4).unwrap());
+    normal_work(
+        &ContactLaw::new(LinearSpring::new(1000.0).unwrap(), tangential),
+        &[1e-7, 5e-6],
+    );
+    let undamped = LinearSpringDashpot::new(1000.0, 1.0).unwrap();
+    normal_work(&ContactLaw::new(undamped, tangential), &[1e-7, 5e-6]);
 }
 
 /// Drives a contact quasi-statically (sphere j, pressed `overlap` into sphere i along x, moves
