@@ -1089,6 +1089,9 @@ fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
     let pool = Threads::new(2).unwrap();
     let outcome = scene.run_on(&input, 1, &pool, |_, _| {});
     assert_eq!(outcome, Err(StepError::Diverged { index: 900 }));
+    // The owned scene remembers it: no later run steps again.
+    assert_eq!(scene.run(&input, 1, |_, _| {}), Err(StepError::Halted));
+    assert_eq!(scene.scene(|_| ()), Err(StepError::Halted));
 }
 
 /// A box of side 2^-7 m centred on the origin, periodic in x and y, and a sphere in it moving at

@@ -191,6 +191,27 @@ fn the_step_is_checked_against_the_stiffest_pair_of_materials_present() {
 }
 
 #[test]
+fn the_recommended_step_is_the_smallest_of_the_pairs_present() {
+    let table = table();
+    let (mut scene, _) = mixture();
+    let mass = scene.spheres()[0].mass;
+    let present = [
+        (0, 0, mass / 2.0),
+        (0, 1, mass / 2.0),
+        (1, 1, mass / 2.0),
+        (0, 1, mass),
+        (1, 1, mass),
+    ];
+    let smallest = present
+        .iter()
+        .map(|&(a, b, m)| table.law(a, b).unwrap().recommended_time_step(m))
+        .fold(f64::INFINITY, f64::min);
+    let recommended = scene.scene(|s| s.recommended_time_step(&table)).unwrap();
+    assert_eq!(recommended, Ok(Some(smallest)));
+    assert!(smallest > 0.0 && smallest.is_finite());
+}
+
+#[test]
 fn material_ids_past_the_table_are_refused_with_their_sphere_or_wall() {
     let table = table();
     let (scene, _) = mixture();
