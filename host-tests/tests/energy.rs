@@ -265,6 +265,53 @@ fn a_head_on_impact_dissipates_one_minus_e_squared_of_its_relative_kinetic_energ
 }
 
 #[test]
+fn an_oblique_impact_that_slides_throughout_gives_its_slider_the_rigid_body_share() {
+    // Equal spheres meeting at 0.1 m/s along the line of centres and 0.2 m/s across it, mu =
+    // 0.05, stiff enough that the line of centres turns by less than a degree in the contact, no
+    // dashpots (e = 1, so the Coulomb limit is the elastic force's). The normal impulse is
+    // J_n = 2 m* v_n; the contact slides throughout (7 mu v_n < v_t), so the tangential impulse
+    // is mu J_n, the slip falls linearly with it by (7/2) J_t / m*, and the slider takes
+    // J_t (v_t + v_t') / 2 = 2 mu m* v_n (v_t - 3.5 mu v_n).
+    let (normal_speed, slip, friction) = (0.1, 0.2, 0.05);
+    let law: Linear = ContactLaw::new(
+        LinearSpringDashpot::new(1.0e4, 1.0).unwrap(),
+        ModelAA(TangentialParameters::new(2857.0, 0.0, friction).unwrap()),
+    );
+    let table = MaterialTable::<_, 1>::uniform(law);
+    let mut a = Sphere::solid(Vec3::new(2.0e-3, 3e-3, 3e-3), RADIUS, DENSITY);
+    let mut b = Sphere::solid(Vec3::new(3.0001e-3, 3e-3, 3e-3), RADIUS, DENSITY);
+    a.velocity = Vec3::new(normal_speed, slip, 0.0) * 0.5;
+    b.velocity = -a.velocity;
+    let m = effective_mass(a.mass, b.mass);
+    let duration = law.contact_duration(m);
+    let dt = duration / 1000.0;
+    let mut scene = OwnedScene::<_, _>::new(vec![a, b], open_box(), (2.0 * RADIUS, 1e-3), NoWalls)
+        .unwrap()
+        .with_records();
+    let input = StepInput {
+        table: &table,
+        gravity: Vec3::ZERO,
+        time_step: scene.scene(|s| s.time_step(&table, dt)).unwrap().unwrap(),
+        integrator: Integrator::VelocityVerlet,
+    };
+    let steps = ((1e-7 / normal_speed + 2.0 * duration) / dt) as usize;
+    let energies = accounts(&mut scene, &input, steps);
+    let last = energies.last().unwrap();
+    let expected = 2.0 * friction * m * normal_speed * (slip - 3.5 * friction * normal_speed);
+    assert!(last.stored == 0.0, "the contact has ended");
+    assert!(
+        (last.dissipated_sliding - expected).abs() < 0.02 * expected,
+        "{:e} J to the slider, the rigid-body share {expected:e} J",
+        last.dissipated_sliding
+    );
+    let total = last.dissipated_sliding + last.dissipated_dashpots;
+    assert!(
+        (total - expected).abs() < 0.02 * expected,
+        "{total:e} J dissipated in all, {expected:e} J expected"
+    );
+}
+
+#[test]
 fn a_sphere_sliding_on_a_floor_loses_two_sevenths_of_its_kinetic_energy_to_the_slider() {
     let friction = 0.3;
     let law = linear(0.5, friction);
