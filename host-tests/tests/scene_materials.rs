@@ -34,8 +34,9 @@ fn table() -> MaterialTable<Plain, 2> {
     MaterialTable::mixed(&mixing, &[glass, steel]).unwrap()
 }
 
-/// A squeezed periodic gas of 300 spheres, every other one steel, over a steel floor.
-fn mixture() -> (OwnedScene<Plain, [MaterialWall<f64>; 1]>, Domain<f64>) {
+/// A squeezed periodic gas of 300 spheres, half of them steel, between a steel floor and a
+/// glass ceiling.
+fn mixture() -> (OwnedScene<Plain, [MaterialWall<f64>; 2]>, Domain<f64>) {
     let column = Column {
         spheres: 300,
         diameter: DIAMETER,
@@ -63,13 +64,22 @@ fn mixture() -> (OwnedScene<Plain, [MaterialWall<f64>; 1]>, Domain<f64>) {
         .unwrap(),
         material: 1,
     };
+    let highest = spheres.iter().map(|s| s.position.z).fold(0.0, f64::max);
+    let ceiling = MaterialWall {
+        wall: Wall::new(
+            Vec3::new(0.0, 0.0, highest + 0.45 * DIAMETER),
+            Vec3::new(0.0, 0.0, -1.0),
+        )
+        .unwrap(),
+        material: 0,
+    };
     // Half of each, at random (the lattice's vertical neighbours would alternate otherwise).
     let materials = spheres
         .iter()
         .map(|_| u32::from(random.unit() < 0.5))
         .collect();
     let domain = column.domain(height);
-    let scene = OwnedScene::new(spheres, domain, (DIAMETER, 1e-4), [floor])
+    let scene = OwnedScene::new(spheres, domain, (DIAMETER, 1e-4), [floor, ceiling])
         .unwrap()
         .with_materials(materials)
         .unwrap()
@@ -90,7 +100,7 @@ fn each_contact_of_a_mixture_gets_the_law_of_its_pair_of_materials() {
     };
     let (lx, ly) = (domain.upper.x, domain.upper.y);
     let mut seen = [[0usize; 2]; 2];
-    let mut walls_seen = 0;
+    let mut walls_seen = [0; 2];
     for _ in 0..100 {
         let before = scene.spheres().to_vec();
         let materials = scene.materials().to_vec();
@@ -112,10 +122,12 @@ fn each_contact_of_a_mixture_gets_the_law_of_its_pair_of_materials() {
                             law.sphere_sphere(&before[i], &image, &mut (), time_step)
                         }
                         ContactBodies::Wall { sphere, wall } => {
-                            walls_seen += 1;
-                            let floor = &s.walls()[wall];
-                            let law = table.law(materials[sphere] as usize, 1).unwrap();
-                            law.sphere_wall(&before[sphere], &floor.wall, &mut (), time_step)
+                            walls_seen[wall] += 1;
+                            let w = &s.walls()[wall];
+                            let law = table
+                                .law(materials[sphere] as usize, w.material as usize)
+                                .unwrap();
+                            law.sphere_wall(&before[sphere], &w.wall, &mut (), time_step)
                         }
                     };
                     assert_eq!(direct, Ok(Interaction::Touching(view.forces)));
@@ -149,7 +161,7 @@ fn each_contact_of_a_mixture_gets_the_law_of_its_pair_of_materials() {
         seen[0][0] > 0 && seen[0][1] > 0 && seen[1][1] > 0,
         "{seen:?}"
     );
-    assert!(walls_seen > 0);
+    assert!(walls_seen[0] > 0 && walls_seen[1] > 0, "{walls_seen:?}");
 }
 
 #[test]
@@ -157,14 +169,15 @@ fn the_step_is_checked_against_the_stiffest_pair_of_materials_present() {
     let table = table();
     let (mut scene, _) = mixture();
     let mass = scene.spheres()[0].mass;
-    // Every pair of materials between spheres (pairs of m/2), and each with the steel floor
-    // (m): the smallest limit among them, and whose it is.
+    // Every pair of materials between spheres (pairs of m/2), and each with the steel floor and
+    // the glass ceiling (m): the smallest limit among them, and whose it is.
     let present = [
         (0, 0, mass / 2.0),
         (0, 1, mass / 2.0),
         (1, 1, mass / 2.0),
         (0, 1, mass),
         (1, 1, mass),
+        (0, 0, mass),
     ];
     let (limit, materials) = present
         .iter()
@@ -201,6 +214,7 @@ fn the_recommended_step_is_the_smallest_of_the_pairs_present() {
         (1, 1, mass / 2.0),
         (0, 1, mass),
         (1, 1, mass),
+        (0, 0, mass),
     ];
     let smallest = present
         .iter()
@@ -263,6 +277,41 @@ fn material_ids_past_the_table_are_refused_with_their_sphere_or_wall() {
             .err(),
         Some(soft_sphere_scene::SceneError::Materials)
     );
+}
+
+#[test]
+fn a_refused_step_leaves_no_view() {
+    let table = table();
+    let glass_only = MaterialTable::<Plain, 1>::uniform(*table.law(0, 0).unwrap());
+    let (mut scene, _) = mixture();
+    let time_step = scene.scene(|s| s.time_step(&table, 2e-6)).unwrap().unwrap();
+    let input = |integrator| (time_step, integrator);
+    scene
+        .scene(|s| {
+            let (dt, integrator) = input(Integrator::SymplecticEuler);
+            let good = StepInput {
+                table: &table,
+                gravity: Vec3::ZERO,
+                time_step: dt,
+                integrator,
+            };
+            s.step(&good).unwrap();
+            assert!(s.contacts().count() > 0);
+            // Steel is not a material of this table: the step is refused, and what the records
+            // held of the last step no longer describes the scene.
+            let refused = StepInput {
+                table: &glass_only,
+                gravity: Vec3::ZERO,
+                time_step: dt,
+                integrator,
+            };
+            assert!(matches!(
+                s.step(&refused),
+                Err(StepError::Material { material: 1, .. })
+            ));
+            assert_eq!(s.contacts().count(), 0);
+        })
+        .unwrap();
 }
 
 #[test]
