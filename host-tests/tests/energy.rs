@@ -304,6 +304,23 @@ fn an_oblique_impact_that_slides_throughout_gives_its_slider_the_rigid_body_shar
         "{:e} J to the slider, the rigid-body share {expected:e} J",
         last.dissipated_sliding
     );
+    // At the deepest compression half the normal impulse has acted: the friction force has
+    // done mu J (v_t - 1.75 mu J / m*) with J = m* v_n, of which the capped tangential spring
+    // holds (mu F_n)^2 / (2 k_t) = x E_n (x = mu^2 k_n / k_t, E_n the normal spring's energy)
+    // and the slider took the rest.
+    let deepest = energies
+        .iter()
+        .max_by(|a, b| a.stored.total_cmp(&b.stored))
+        .unwrap();
+    let x = friction * friction * 1.0e4 / 2857.0;
+    let capped_spring = deepest.stored * x / (1.0 + x);
+    let halfway =
+        friction * m * normal_speed * (slip - 1.75 * friction * normal_speed) - capped_spring;
+    assert!(
+        (deepest.dissipated_sliding - halfway).abs() < 0.02 * halfway,
+        "{:e} J to the slider at the deepest compression, {halfway:e} J expected",
+        deepest.dissipated_sliding
+    );
     let total = last.dissipated_sliding + last.dissipated_dashpots;
     assert!(
         (total - expected).abs() < 0.02 * expected,
@@ -318,10 +335,17 @@ fn a_sphere_sliding_on_a_floor_loses_two_sevenths_of_its_kinetic_energy_to_the_s
     let table = MaterialTable::<_, 1>::uniform(law);
     let g = 9.81;
     let v0 = 0.05;
-    let floor = [MaterialWall {
-        wall: Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
-        material: 0,
-    }];
+    // A ceiling nobody reaches first, so that the floor's states are each sphere's second.
+    let floor = [
+        MaterialWall {
+            wall: Wall::new(Vec3::new(0.0, 0.0, 5e-3), Vec3::new(0.0, 0.0, -1.0)).unwrap(),
+            material: 0,
+        },
+        MaterialWall {
+            wall: Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap(),
+            material: 0,
+        },
+    ];
     let mut sphere = Sphere::solid(Vec3::new(1e-3, 3e-3, 0.0), RADIUS, DENSITY);
     // Resting at its static overlap, moving along x without spin.
     sphere.position.z = RADIUS - sphere.mass * g / 1000.0;
@@ -476,6 +500,16 @@ fn elastic_pour<L: Law<Float = f64>>(
         + last.wall_work.abs();
     let mut worst: f64 = 0.0;
     for energy in &energies {
+        // The balance closes with the ceiling's drive in it.
+        let by_hand = energy.kinetic
+            + energy.rotational
+            + energy.stored
+            + energy.dissipated_dashpots
+            + energy.dissipated_sliding
+            - energy.gravity_work
+            - energy.wall_work;
+        assert!((energy.balance() - by_hand).abs() <= 1e-12 * scale);
+        assert!((energy.balance() - first.balance()).abs() < 1e-9 * scale);
         assert!(
             energy.dissipated_sliding.abs() < 1e-12 * scale,
             "nothing slides"
