@@ -164,21 +164,27 @@ fn each_contact_of_a_mixture_gets_the_law_of_its_pair_of_materials() {
     assert!(walls_seen[0] > 0 && walls_seen[1] > 0, "{walls_seen:?}");
 }
 
-#[test]
-fn the_step_is_checked_against_the_stiffest_pair_of_materials_present() {
-    let table = table();
-    let (mut scene, _) = mixture();
-    let mass = scene.spheres()[0].mass;
-    // Every pair of materials between spheres (pairs of m/2), and each with the steel floor and
-    // the glass ceiling (m): the smallest limit among them, and whose it is.
-    let present = [
+/// The pairs of materials [`mixture`] presents with the effective mass each is checked at: every
+/// pair between spheres (pairs of `m/2`), and each material with the steel floor and the glass
+/// ceiling (`m`).
+fn present(mass: f64) -> [(usize, usize, f64); 6] {
+    [
         (0, 0, mass / 2.0),
         (0, 1, mass / 2.0),
         (1, 1, mass / 2.0),
         (0, 1, mass),
         (1, 1, mass),
         (0, 0, mass),
-    ];
+    ]
+}
+
+#[test]
+fn the_step_is_checked_against_the_stiffest_pair_of_materials_present() {
+    let table = table();
+    let (mut scene, _) = mixture();
+    let mass = scene.spheres()[0].mass;
+    // The smallest limit among the pairs present, and whose it is.
+    let present = present(mass);
     let (limit, materials) = present
         .iter()
         .map(|&(a, b, m)| {
@@ -208,14 +214,7 @@ fn the_recommended_step_is_the_smallest_of_the_pairs_present() {
     let table = table();
     let (mut scene, _) = mixture();
     let mass = scene.spheres()[0].mass;
-    let present = [
-        (0, 0, mass / 2.0),
-        (0, 1, mass / 2.0),
-        (1, 1, mass / 2.0),
-        (0, 1, mass),
-        (1, 1, mass),
-        (0, 0, mass),
-    ];
+    let present = present(mass);
     let smallest = present
         .iter()
         .map(|&(a, b, m)| table.law(a, b).unwrap().recommended_time_step(m))
