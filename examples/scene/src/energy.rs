@@ -134,10 +134,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     (sphere.velocity, sphere.angular_velocity),
                     (velocity, Vec3::ZERO),
                 ];
-                let states = (
-                    &self.saved_states[k],
-                    &self.wall_states[s * walls.len() + w],
-                );
+                // The wall states follow the pairs' in the records and the seam's copy.
+                let states = (&self.saved_states[k], &self.wall_states[k - count]);
                 let record = &self.records[k];
                 book(law, (sphere.radius, dt), motion, states, record, &mut sums);
                 if let Interaction::Touching(c) = record {
