@@ -196,6 +196,33 @@
 #define SS_PARAMETER_RADIUS 12
 
 /**
+ * The most materials a table holds (LAMMPS atom types).
+ */
+#define SS_MATERIALS_MAX 16
+
+/**
+ * An array's length or a count is negative, past what the call can index, or disagrees with
+ * another (a history with fewer values per neighbour than the law keeps).
+ */
+#define SS_ERR_LENGTH 16
+
+/**
+ * An atom of the list, or a neighbour, is past the atoms.
+ */
+#define SS_ERR_INDEX 17
+
+/**
+ * A material (an atom's type) is past the table, or a pair of materials has no law: neither
+ * its own coefficients nor both materials' for the mixing rule.
+ */
+#define SS_ERR_MATERIAL 18
+
+/**
+ * The table's time step has not been checked (`ss_table_prepare_*`) since it last changed.
+ */
+#define SS_ERR_NOT_PREPARED 19
+
+/**
  * A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
  * normal oscillator of the last pair of masses and the last wall it checked, so a host that
  * calls it over a neighbour list derives each once; the results are the same bits as the
@@ -220,6 +247,18 @@ typedef struct ss_law_f32 ss_law_f32;
  * A validated contact law and its checked time step (opaque to C).
  */
 typedef struct ss_law_f64 ss_law_f64;
+
+/**
+ * A table: its coefficients as given, the laws and the step once prepared, and the working
+ * memory of evaluations (opaque to C).
+ */
+typedef struct ss_table_f32 ss_table_f32;
+
+/**
+ * A table: its coefficients as given, the laws and the step once prepared, and the working
+ * memory of evaluations (opaque to C).
+ */
+typedef struct ss_table_f64 ss_table_f64;
 
 /**
  * An elastic material, for `ss_effective_moduli_*`.
@@ -572,6 +611,213 @@ typedef struct {
 } ss_forces_arrays_f64;
 
 /**
+ * What a table is made for: one family of laws for every pair of materials.
+ */
+typedef struct {
+  /**
+   * `SS_MODEL_*`: every pair's law is of this family.
+   */
+  int32_t model;
+  /**
+   * How many materials (at most `SS_MATERIALS_MAX`).
+   */
+  size_t materials;
+  /**
+   * `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+   */
+  double largest_impact_speed;
+  /**
+   * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+   */
+  double largest_effective_radius;
+} ss_table_config_f64;
+
+/**
+ * The coefficients of a material, or of one pair of materials' contact. The linear laws read
+ * the first five, the Hertz laws Young's modulus, Poisson's ratio, restitution, the dashpot
+ * ratio and friction. The frictionless laws ignore the tangential ones.
+ */
+typedef struct {
+  /**
+   * k_n (N/m), linear laws.
+   */
+  double normal_stiffness;
+  /**
+   * Normal restitution e, in [0, 1].
+   */
+  double restitution;
+  /**
+   * k_t (N/m), linear laws.
+   */
+  double tangential_stiffness;
+  /**
+   * The dashpot ratio eta_t / eta_n.
+   */
+  double dashpot_ratio;
+  /**
+   * Coulomb mu.
+   */
+  double friction;
+  /**
+   * Young's modulus E (Pa), Hertz laws.
+   */
+  double youngs_modulus;
+  /**
+   * Poisson's ratio nu, in (-1, 0.5], Hertz laws.
+   */
+  double poisson_ratio;
+} ss_coefficients_f64;
+
+/**
+ * Why `ss_table_prepare_*` refused: the pair of materials and, for a refused step, the largest
+ * stable step of that pair.
+ */
+typedef struct {
+  /**
+   * The two materials (-1 when the error is about none).
+   */
+  int64_t materials[2];
+  /**
+   * `SS_PARAMETER_*` the error is about.
+   */
+  int32_t parameter;
+  /**
+   * For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+   */
+  double limit;
+} ss_table_report_f64;
+
+/**
+ * The atoms, as flat arrays of `count` entries (three per atom for vectors): owned atoms
+ * first, then ghosts. The material of atom `k` is `types[k] - first_type`.
+ */
+typedef struct {
+  /**
+   * How many atoms every array holds (LAMMPS: `nlocal + nghost`).
+   */
+  size_t count;
+  /**
+   * The atoms `[0, owned)` are this process's own (LAMMPS: `nlocal`).
+   */
+  size_t owned;
+  /**
+   * Centres (m), x y z per atom.
+   */
+  const double *position;
+  /**
+   * Velocities (m/s), x y z per atom.
+   */
+  const double *velocity;
+  /**
+   * Angular velocities (rad/s), x y z per atom.
+   */
+  const double *angular_velocity;
+  /**
+   * Radii (m).
+   */
+  const double *radius;
+  /**
+   * Masses (kg).
+   */
+  const double *mass;
+  /**
+   * Types.
+   */
+  const int32_t *types;
+  /**
+   * The type of material 0 (LAMMPS: 1).
+   */
+  int32_t first_type;
+} ss_atoms_f64;
+
+/**
+ * A neighbour list as LAMMPS keeps it: `count` atoms (`atoms[0 .. count)`); atom `i`'s
+ * neighbours are `first_neighbour[i][0 .. neighbour_counts[i])`, each masked with
+ * `index_mask`. `neighbour_counts` and `first_neighbour` are indexed by atom, so they must hold
+ * an entry for every atom the list names.
+ */
+typedef struct {
+  /**
+   * How many atoms the list holds (LAMMPS: `inum`).
+   */
+  size_t count;
+  /**
+   * The atoms (LAMMPS: `ilist`).
+   */
+  const int32_t *atoms;
+  /**
+   * Per atom, how many neighbours (LAMMPS: `numneigh`).
+   */
+  const int32_t *neighbour_counts;
+  /**
+   * Per atom, its first neighbour (LAMMPS: `firstneigh`).
+   */
+  const int32_t *const *first_neighbour;
+  /**
+   * ANDed with each neighbour (LAMMPS: `NEIGHMASK`; -1 keeps every bit).
+   */
+  int32_t index_mask;
+} ss_neighbours;
+
+/**
+ * The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
+ * `values` numbers from `first_value[i] + jj * values` and a touch flag at
+ * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+ */
+typedef struct {
+  /**
+   * Numbers per neighbour, at least `ss_table_state_values_*`.
+   */
+  size_t values;
+  /**
+   * Per atom, its first neighbour's values.
+   */
+  double *const *first_value;
+  /**
+   * Per atom, its first neighbour's touch flag.
+   */
+  int32_t *const *first_touch;
+} ss_history_f64;
+
+/**
+ * Where the forces go: added to `force` and `torque` (x y z per atom, `count` atoms), on every
+ * atom when `newton` is 1 (LAMMPS `newton_pair on`: ghosts' forces are sent home), else only
+ * on the owned atoms.
+ */
+typedef struct {
+  /**
+   * Forces (N), added to.
+   */
+  double *force;
+  /**
+   * Torques (N m), added to.
+   */
+  double *torque;
+  /**
+   * 1: every atom receives; 0: only the owned atoms.
+   */
+  int32_t newton;
+} ss_loads_f64;
+
+/**
+ * What an evaluation found, and which atoms an error is about.
+ */
+typedef struct {
+  /**
+   * Touching pairs.
+   */
+  size_t contacts;
+  /**
+   * Pairs at the Coulomb limit.
+   */
+  size_t sliding;
+  /**
+   * The atoms (indices into the arrays) an error is about; -1 when none.
+   */
+  int64_t atoms[2];
+} ss_list_report;
+
+/**
  * Law parameters, validated once by the constructor.
  */
 typedef struct {
@@ -893,6 +1139,166 @@ typedef struct {
   float *torque_on_j_z;
 } ss_forces_arrays_f32;
 
+/**
+ * What a table is made for: one family of laws for every pair of materials.
+ */
+typedef struct {
+  /**
+   * `SS_MODEL_*`: every pair's law is of this family.
+   */
+  int32_t model;
+  /**
+   * How many materials (at most `SS_MATERIALS_MAX`).
+   */
+  size_t materials;
+  /**
+   * `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+   */
+  float largest_impact_speed;
+  /**
+   * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+   */
+  float largest_effective_radius;
+} ss_table_config_f32;
+
+/**
+ * The coefficients of a material, or of one pair of materials' contact. The linear laws read
+ * the first five, the Hertz laws Young's modulus, Poisson's ratio, restitution, the dashpot
+ * ratio and friction. The frictionless laws ignore the tangential ones.
+ */
+typedef struct {
+  /**
+   * k_n (N/m), linear laws.
+   */
+  float normal_stiffness;
+  /**
+   * Normal restitution e, in [0, 1].
+   */
+  float restitution;
+  /**
+   * k_t (N/m), linear laws.
+   */
+  float tangential_stiffness;
+  /**
+   * The dashpot ratio eta_t / eta_n.
+   */
+  float dashpot_ratio;
+  /**
+   * Coulomb mu.
+   */
+  float friction;
+  /**
+   * Young's modulus E (Pa), Hertz laws.
+   */
+  float youngs_modulus;
+  /**
+   * Poisson's ratio nu, in (-1, 0.5], Hertz laws.
+   */
+  float poisson_ratio;
+} ss_coefficients_f32;
+
+/**
+ * Why `ss_table_prepare_*` refused: the pair of materials and, for a refused step, the largest
+ * stable step of that pair.
+ */
+typedef struct {
+  /**
+   * The two materials (-1 when the error is about none).
+   */
+  int64_t materials[2];
+  /**
+   * `SS_PARAMETER_*` the error is about.
+   */
+  int32_t parameter;
+  /**
+   * For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+   */
+  float limit;
+} ss_table_report_f32;
+
+/**
+ * The atoms, as flat arrays of `count` entries (three per atom for vectors): owned atoms
+ * first, then ghosts. The material of atom `k` is `types[k] - first_type`.
+ */
+typedef struct {
+  /**
+   * How many atoms every array holds (LAMMPS: `nlocal + nghost`).
+   */
+  size_t count;
+  /**
+   * The atoms `[0, owned)` are this process's own (LAMMPS: `nlocal`).
+   */
+  size_t owned;
+  /**
+   * Centres (m), x y z per atom.
+   */
+  const float *position;
+  /**
+   * Velocities (m/s), x y z per atom.
+   */
+  const float *velocity;
+  /**
+   * Angular velocities (rad/s), x y z per atom.
+   */
+  const float *angular_velocity;
+  /**
+   * Radii (m).
+   */
+  const float *radius;
+  /**
+   * Masses (kg).
+   */
+  const float *mass;
+  /**
+   * Types.
+   */
+  const int32_t *types;
+  /**
+   * The type of material 0 (LAMMPS: 1).
+   */
+  int32_t first_type;
+} ss_atoms_f32;
+
+/**
+ * The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
+ * `values` numbers from `first_value[i] + jj * values` and a touch flag at
+ * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+ */
+typedef struct {
+  /**
+   * Numbers per neighbour, at least `ss_table_state_values_*`.
+   */
+  size_t values;
+  /**
+   * Per atom, its first neighbour's values.
+   */
+  float *const *first_value;
+  /**
+   * Per atom, its first neighbour's touch flag.
+   */
+  int32_t *const *first_touch;
+} ss_history_f32;
+
+/**
+ * Where the forces go: added to `force` and `torque` (x y z per atom, `count` atoms), on every
+ * atom when `newton` is 1 (LAMMPS `newton_pair on`: ghosts' forces are sent home), else only
+ * on the owned atoms.
+ */
+typedef struct {
+  /**
+   * Forces (N), added to.
+   */
+  float *force;
+  /**
+   * Torques (N m), added to.
+   */
+  float *torque;
+  /**
+   * 1: every atom receives; 0: only the owned atoms.
+   */
+  int32_t newton;
+} ss_loads_f32;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1072,6 +1478,124 @@ int32_t ss_stability_limit_f64(const ss_params_f64 *params, double *out);
 int32_t ss_rejected_parameter_f64(const ss_params_f64 *params);
 
 /**
+ * A material table of `config->materials` materials, every pair's law of the family
+ * `config->model`, written to `*out` (free it with the matching `ss_table_free_*`).
+ * Give it coefficients with `ss_table_set_*`, then check its step with
+ * `ss_table_prepare_*`. Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_UNKNOWN_MODEL`,
+ * `SS_ERR_MATERIAL` (no materials, or more than `SS_MATERIALS_MAX`) or, for a Hertz
+ * family, the code of a bad declared impact; `*out` is untouched on error.
+ *
+ * # Safety
+ * `config` and `out` must be valid pointers or null.
+ */
+int32_t ss_table_new_f64(const ss_table_config_f64 *config, ss_table_f64 **out);
+
+/**
+ * Frees a table (null is ignored).
+ *
+ * # Safety
+ * `table` must come from the matching constructor and not be used afterwards.
+ */
+void ss_table_free_f64(ss_table_f64 *table);
+
+/**
+ * Gives materials `a` and `b` their coefficients. `a == b`: material `a`'s own, which
+ * also make its law with every material not given a pair of its own (the kernel's
+ * mixing rule: geometric means, Hertz's and Mindlin's effective moduli). `a != b`: that
+ * pair's law, the rule's of `*coefficients` with themselves. Checked now: on error
+ * (`SS_ERR_MATERIAL` for a material past the table, or the parameter's code, with the
+ * `SS_PARAMETER_*` in `*parameter` when it is not null) the table is unchanged.
+ * The table must be prepared again before it evaluates.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_table_set_f64(ss_table_f64 *table,
+                         size_t a,
+                         size_t b,
+                         const ss_coefficients_f64 *coefficients,
+                         int32_t *parameter);
+
+/**
+ * Makes every pair's law and checks `time_step` against the law of every pair of
+ * materials present, at the effective mass of their lightest atoms:
+ * `lightest_mass[m]` is material `m`'s lightest atom mass over the whole run (every
+ * process's), 0 for a material with no atoms. On error (`SS_ERR_MATERIAL` for a pair
+ * with no law, `SS_ERR_UNSTABLE_TIME_STEP` and the others of the parameters,
+ * `SS_ERR_NON_FINITE_INPUT` for a mass that is not finite), `*report` (when not null)
+ * names the pair of materials, the parameter and the pair's stability limit, and the
+ * table does not evaluate until prepared.
+ *
+ * # Safety
+ * `lightest_mass` must hold one number per material; the others be valid or null.
+ */
+int32_t ss_table_prepare_f64(ss_table_f64 *table,
+                             double time_step,
+                             const double *lightest_mass,
+                             ss_table_report_f64 *report);
+
+/**
+ * The whole neighbour list in one call: every pair `(i, j)` with the law of their
+ * materials, its state read from the history (zero where `history` is null), each
+ * contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
+ * and torques are added into `*loads` (each atom's in list order), each neighbour's
+ * touch flag is set, and, when `advance` is not 0, its history values are advanced
+ * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
+ * error nothing is written but `*report`, which names the atoms (indices) it is
+ * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
+ * `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+ * `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
+ * memory).
+ *
+ * # Safety
+ * Every array must hold what its field says; the written arrays (forces, torques,
+ * history) must not overlap each other or the inputs.
+ */
+int32_t ss_table_evaluate_f64(ss_table_f64 *table,
+                              const ss_atoms_f64 *atoms,
+                              const ss_neighbours *neighbours,
+                              const ss_history_f64 *history,
+                              const ss_loads_f64 *loads,
+                              int32_t advance,
+                              ss_list_report *report);
+
+/**
+ * One pair's contact with the law of materials `a` and `b`, its state read from
+ * `values` (`ss_table_state_values_*` numbers; null for a fresh contact) and not
+ * written: what a host reports per pair (LAMMPS `single()`). Writes `*out` on success.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_table_pair_f64(const ss_table_f64 *table,
+                          size_t a,
+                          size_t b,
+                          const ss_sphere_f64 *i,
+                          const ss_sphere_f64 *j,
+                          const double *values,
+                          ss_forces_f64 *out);
+
+/**
+ * How many numbers the table's law keeps per contact (0 for the stateless and
+ * frictionless laws, 3 for Model AA's displacement, 4 for Mindlin's spring force and
+ * contact radius); 0 for a null table.
+ *
+ * # Safety
+ * `table` must be valid or null.
+ */
+size_t ss_table_state_values_f64(const ss_table_f64 *table);
+
+/**
+ * Writes to `target` the state `source` seen from the other body (the pair's i and j
+ * swapped): a displacement or spring force is negated, a contact radius kept. `source`
+ * and `target` may be the same.
+ *
+ * # Safety
+ * `source` and `target` must hold `ss_table_state_values_*` numbers, or be null.
+ */
+int32_t ss_table_mirror_state_f64(const ss_table_f64 *table, const double *source, double *target);
+
+/**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching
  * `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
  *
@@ -1219,6 +1743,124 @@ int32_t ss_stability_limit_f32(const ss_params_f32 *params, float *out);
  * `params` must be a valid pointer or null.
  */
 int32_t ss_rejected_parameter_f32(const ss_params_f32 *params);
+
+/**
+ * A material table of `config->materials` materials, every pair's law of the family
+ * `config->model`, written to `*out` (free it with the matching `ss_table_free_*`).
+ * Give it coefficients with `ss_table_set_*`, then check its step with
+ * `ss_table_prepare_*`. Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_UNKNOWN_MODEL`,
+ * `SS_ERR_MATERIAL` (no materials, or more than `SS_MATERIALS_MAX`) or, for a Hertz
+ * family, the code of a bad declared impact; `*out` is untouched on error.
+ *
+ * # Safety
+ * `config` and `out` must be valid pointers or null.
+ */
+int32_t ss_table_new_f32(const ss_table_config_f32 *config, ss_table_f32 **out);
+
+/**
+ * Frees a table (null is ignored).
+ *
+ * # Safety
+ * `table` must come from the matching constructor and not be used afterwards.
+ */
+void ss_table_free_f32(ss_table_f32 *table);
+
+/**
+ * Gives materials `a` and `b` their coefficients. `a == b`: material `a`'s own, which
+ * also make its law with every material not given a pair of its own (the kernel's
+ * mixing rule: geometric means, Hertz's and Mindlin's effective moduli). `a != b`: that
+ * pair's law, the rule's of `*coefficients` with themselves. Checked now: on error
+ * (`SS_ERR_MATERIAL` for a material past the table, or the parameter's code, with the
+ * `SS_PARAMETER_*` in `*parameter` when it is not null) the table is unchanged.
+ * The table must be prepared again before it evaluates.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_table_set_f32(ss_table_f32 *table,
+                         size_t a,
+                         size_t b,
+                         const ss_coefficients_f32 *coefficients,
+                         int32_t *parameter);
+
+/**
+ * Makes every pair's law and checks `time_step` against the law of every pair of
+ * materials present, at the effective mass of their lightest atoms:
+ * `lightest_mass[m]` is material `m`'s lightest atom mass over the whole run (every
+ * process's), 0 for a material with no atoms. On error (`SS_ERR_MATERIAL` for a pair
+ * with no law, `SS_ERR_UNSTABLE_TIME_STEP` and the others of the parameters,
+ * `SS_ERR_NON_FINITE_INPUT` for a mass that is not finite), `*report` (when not null)
+ * names the pair of materials, the parameter and the pair's stability limit, and the
+ * table does not evaluate until prepared.
+ *
+ * # Safety
+ * `lightest_mass` must hold one number per material; the others be valid or null.
+ */
+int32_t ss_table_prepare_f32(ss_table_f32 *table,
+                             float time_step,
+                             const float *lightest_mass,
+                             ss_table_report_f32 *report);
+
+/**
+ * The whole neighbour list in one call: every pair `(i, j)` with the law of their
+ * materials, its state read from the history (zero where `history` is null), each
+ * contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
+ * and torques are added into `*loads` (each atom's in list order), each neighbour's
+ * touch flag is set, and, when `advance` is not 0, its history values are advanced
+ * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
+ * error nothing is written but `*report`, which names the atoms (indices) it is
+ * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
+ * `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+ * `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
+ * memory).
+ *
+ * # Safety
+ * Every array must hold what its field says; the written arrays (forces, torques,
+ * history) must not overlap each other or the inputs.
+ */
+int32_t ss_table_evaluate_f32(ss_table_f32 *table,
+                              const ss_atoms_f32 *atoms,
+                              const ss_neighbours *neighbours,
+                              const ss_history_f32 *history,
+                              const ss_loads_f32 *loads,
+                              int32_t advance,
+                              ss_list_report *report);
+
+/**
+ * One pair's contact with the law of materials `a` and `b`, its state read from
+ * `values` (`ss_table_state_values_*` numbers; null for a fresh contact) and not
+ * written: what a host reports per pair (LAMMPS `single()`). Writes `*out` on success.
+ *
+ * # Safety
+ * All pointers must be valid or null.
+ */
+int32_t ss_table_pair_f32(const ss_table_f32 *table,
+                          size_t a,
+                          size_t b,
+                          const ss_sphere_f32 *i,
+                          const ss_sphere_f32 *j,
+                          const float *values,
+                          ss_forces_f32 *out);
+
+/**
+ * How many numbers the table's law keeps per contact (0 for the stateless and
+ * frictionless laws, 3 for Model AA's displacement, 4 for Mindlin's spring force and
+ * contact radius); 0 for a null table.
+ *
+ * # Safety
+ * `table` must be valid or null.
+ */
+size_t ss_table_state_values_f32(const ss_table_f32 *table);
+
+/**
+ * Writes to `target` the state `source` seen from the other body (the pair's i and j
+ * swapped): a displacement or spring force is negated, a contact radius kept. `source`
+ * and `target` may be the same.
+ *
+ * # Safety
+ * `source` and `target` must hold `ss_table_state_values_*` numbers, or be null.
+ */
+int32_t ss_table_mirror_state_f32(const ss_table_f32 *table, const float *source, float *target);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -20,6 +20,14 @@
 
 #![allow(non_camel_case_types)] // C names: ss_law_f64, ss_sphere_f32, ...
 
+pub mod table;
+
+pub use table::{
+    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX, ss_atoms,
+    ss_coefficients, ss_history, ss_list_report, ss_loads, ss_neighbours, ss_table,
+    ss_table_config, ss_table_report,
+};
+
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
@@ -506,8 +514,16 @@ unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
 trait Stored<F: Float>: ContactState {
     /// Which of `ss_state_arrays`' arrays the batch call needs for this state.
     const ARRAYS: StateArrays;
+    /// How many numbers the state is when kept flat (a host's per-neighbour history).
+    const VALUES: usize;
     fn load(state: &ss_state<F>) -> Self;
     fn store(&self, state: &mut ss_state<F>);
+    /// The state from its `VALUES` flat numbers.
+    fn read(values: &[F]) -> Self;
+    /// The state into its `VALUES` flat numbers.
+    fn write(&self, values: &mut [F]);
+    /// The same contact's state seen from the other body (i and j swapped).
+    fn mirrored(&self) -> Self;
 }
 
 /// The arrays a law's state lives in.
@@ -520,10 +536,16 @@ enum StateArrays {
 
 impl<F: Float> Stored<F> for () {
     const ARRAYS: StateArrays = StateArrays::None;
+    const VALUES: usize = 0;
     #[inline(always)]
     fn load(_: &ss_state<F>) -> Self {}
     #[inline(always)]
     fn store(&self, _: &mut ss_state<F>) {}
+    #[inline(always)]
+    fn read(_: &[F]) -> Self {}
+    #[inline(always)]
+    fn write(&self, _: &mut [F]) {}
+    fn mirrored(&self) -> Self {}
 }
 
 impl<F: Float> Stored<F> for SpringDisplacement<F> {
@@ -537,6 +559,24 @@ impl<F: Float> Stored<F> for SpringDisplacement<F> {
     #[inline(always)]
     fn store(&self, state: &mut ss_state<F>) {
         state.displacement = self.displacement.into();
+    }
+    const VALUES: usize = 3;
+    #[inline(always)]
+    fn read(values: &[F]) -> Self {
+        SpringDisplacement {
+            displacement: Vec3::new(values[0], values[1], values[2]),
+        }
+    }
+    #[inline(always)]
+    fn write(&self, values: &mut [F]) {
+        let d = self.displacement;
+        values[..3].copy_from_slice(&[d.x, d.y, d.z]);
+    }
+    /// The displacement of j relative to i: negated.
+    fn mirrored(&self) -> Self {
+        SpringDisplacement {
+            displacement: -self.displacement,
+        }
     }
 }
 
@@ -553,6 +593,26 @@ impl<F: Float> Stored<F> for MindlinSpring<F> {
     fn store(&self, state: &mut ss_state<F>) {
         state.spring_force = self.force.into();
         state.contact_radius = self.contact_radius;
+    }
+    const VALUES: usize = 4;
+    #[inline(always)]
+    fn read(values: &[F]) -> Self {
+        MindlinSpring {
+            force: Vec3::new(values[0], values[1], values[2]),
+            contact_radius: values[3],
+        }
+    }
+    #[inline(always)]
+    fn write(&self, values: &mut [F]) {
+        let f = self.force;
+        values[..4].copy_from_slice(&[f.x, f.y, f.z, self.contact_radius]);
+    }
+    /// The spring's force on j becomes the force on i: negated; the contact radius stays.
+    fn mirrored(&self) -> Self {
+        MindlinSpring {
+            force: -self.force,
+            contact_radius: self.contact_radius,
+        }
     }
 }
 
@@ -1464,7 +1524,7 @@ unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -1661,8 +1721,157 @@ macro_rules! entry_points {
             // SAFETY: forwarded contract.
             unsafe { rejected(params) }
         }
+        /// A material table of `config->materials` materials, every pair's law of the family
+        /// `config->model`, written to `*out` (free it with the matching `ss_table_free_*`).
+        /// Give it coefficients with `ss_table_set_*`, then check its step with
+        /// `ss_table_prepare_*`. Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_UNKNOWN_MODEL`,
+        /// `SS_ERR_MATERIAL` (no materials, or more than `SS_MATERIALS_MAX`) or, for a Hertz
+        /// family, the code of a bad declared impact; `*out` is untouched on error.
+        ///
+        /// # Safety
+        /// `config` and `out` must be valid pointers or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_new(
+            config: *const table::ss_table_config<$real>,
+            out: *mut *mut table::ss_table<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_new(config, out) }
+        }
+
+        /// Frees a table (null is ignored).
+        ///
+        /// # Safety
+        /// `table` must come from the matching constructor and not be used afterwards.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_free(table: *mut table::ss_table<$real>) {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_free(table) }
+        }
+
+        /// Gives materials `a` and `b` their coefficients. `a == b`: material `a`'s own, which
+        /// also make its law with every material not given a pair of its own (the kernel's
+        /// mixing rule: geometric means, Hertz's and Mindlin's effective moduli). `a != b`: that
+        /// pair's law, the rule's of `*coefficients` with themselves. Checked now: on error
+        /// (`SS_ERR_MATERIAL` for a material past the table, or the parameter's code, with the
+        /// `SS_PARAMETER_*` in `*parameter` when it is not null) the table is unchanged.
+        /// The table must be prepared again before it evaluates.
+        ///
+        /// # Safety
+        /// All pointers must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_set(
+            table: *mut table::ss_table<$real>,
+            a: usize,
+            b: usize,
+            coefficients: *const table::ss_coefficients<$real>,
+            parameter: *mut i32,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_set(table, a, b, coefficients, parameter) }
+        }
+
+        /// Makes every pair's law and checks `time_step` against the law of every pair of
+        /// materials present, at the effective mass of their lightest atoms:
+        /// `lightest_mass[m]` is material `m`'s lightest atom mass over the whole run (every
+        /// process's), 0 for a material with no atoms. On error (`SS_ERR_MATERIAL` for a pair
+        /// with no law, `SS_ERR_UNSTABLE_TIME_STEP` and the others of the parameters,
+        /// `SS_ERR_NON_FINITE_INPUT` for a mass that is not finite), `*report` (when not null)
+        /// names the pair of materials, the parameter and the pair's stability limit, and the
+        /// table does not evaluate until prepared.
+        ///
+        /// # Safety
+        /// `lightest_mass` must hold one number per material; the others be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_prepare(
+            table: *mut table::ss_table<$real>,
+            time_step: $real,
+            lightest_mass: *const $real,
+            report: *mut table::ss_table_report<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_prepare(table, time_step, lightest_mass, report) }
+        }
+
+        /// The whole neighbour list in one call: every pair `(i, j)` with the law of their
+        /// materials, its state read from the history (zero where `history` is null), each
+        /// contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
+        /// and torques are added into `*loads` (each atom's in list order), each neighbour's
+        /// touch flag is set, and, when `advance` is not 0, its history values are advanced
+        /// (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
+        /// error nothing is written but `*report`, which names the atoms (indices) it is
+        /// about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
+        /// `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+        /// `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
+        /// memory).
+        ///
+        /// # Safety
+        /// Every array must hold what its field says; the written arrays (forces, torques,
+        /// history) must not overlap each other or the inputs.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_evaluate(
+            table: *mut table::ss_table<$real>,
+            atoms: *const table::ss_atoms<$real>,
+            neighbours: *const table::ss_neighbours,
+            history: *const table::ss_history<$real>,
+            loads: *const table::ss_loads<$real>,
+            advance: i32,
+            report: *mut table::ss_list_report,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe {
+                table::table_evaluate(table, atoms, neighbours, history, loads, advance, report)
+            }
+        }
+
+        /// One pair's contact with the law of materials `a` and `b`, its state read from
+        /// `values` (`ss_table_state_values_*` numbers; null for a fresh contact) and not
+        /// written: what a host reports per pair (LAMMPS `single()`). Writes `*out` on success.
+        ///
+        /// # Safety
+        /// All pointers must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_pair(
+            table: *const table::ss_table<$real>,
+            a: usize,
+            b: usize,
+            i: *const ss_sphere<$real>,
+            j: *const ss_sphere<$real>,
+            values: *const $real,
+            out: *mut ss_forces<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_pair(table, a, b, (i, j), values, out) }
+        }
+
+        /// How many numbers the table's law keeps per contact (0 for the stateless and
+        /// frictionless laws, 3 for Model AA's displacement, 4 for Mindlin's spring force and
+        /// contact radius); 0 for a null table.
+        ///
+        /// # Safety
+        /// `table` must be valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_values(table: *const table::ss_table<$real>) -> usize {
+            table::state_values(table)
+        }
+
+        /// Writes to `target` the state `source` seen from the other body (the pair's i and j
+        /// swapped): a displacement or spring force is negated, a contact radius kept. `source`
+        /// and `target` may be the same.
+        ///
+        /// # Safety
+        /// `source` and `target` must hold `ss_table_state_values_*` numbers, or be null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_mirror(
+            table: *const table::ss_table<$real>,
+            source: *const $real,
+            target: *mut $real,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_mirror(table, source, target) }
+        }
     };
 }
 
-entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_bound_sphere_pairs_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64);
-entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_bound_sphere_pairs_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32);
+entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_bound_sphere_pairs_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64, ss_table_new_f64, ss_table_free_f64, ss_table_set_f64, ss_table_prepare_f64, ss_table_evaluate_f64, ss_table_pair_f64, ss_table_state_values_f64, ss_table_mirror_state_f64);
+entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_bound_sphere_pairs_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32, ss_table_new_f32, ss_table_free_f32, ss_table_set_f32, ss_table_prepare_f32, ss_table_evaluate_f32, ss_table_pair_f32, ss_table_state_values_f32, ss_table_mirror_state_f32);

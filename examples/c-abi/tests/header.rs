@@ -3,7 +3,8 @@
 //!
 //! The f32 and f64 entry points are written once, as the `entry_points!` macro; cbindgen does not
 //! expand macros, so this test expands its invocations (a plain substitution of the macro's
-//! parameters) and hands cbindgen the source with the expansions appended.
+//! parameters) and hands cbindgen the source with the expansions appended. The table module's
+//! types join the crate root's, as one file.
 
 use std::path::PathBuf;
 
@@ -44,7 +45,20 @@ fn expanded(source: &str) -> String {
 fn header_is_current() {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).unwrap();
-    let source = std::fs::read_to_string(crate_dir.join("src/lib.rs")).unwrap();
+    let root = std::fs::read_to_string(crate_dir.join("src/lib.rs")).unwrap();
+    let table = std::fs::read_to_string(crate_dir.join("src/table.rs")).unwrap();
+    // One file: the module's declaration and re-export dropped, its paths made local.
+    let root = root.replace("pub mod table;", "");
+    let (before, after) = root
+        .split_once("pub use table::{")
+        .expect("the table re-export");
+    let root = format!("{before}{}", after.split_once("};").unwrap().1);
+    let table: String = table
+        .lines()
+        .filter(|line| !line.starts_with("//!"))
+        .map(|line| format!("{line}\n"))
+        .collect();
+    let source = format!("{root}\n{}", table.replace("table::", ""));
     let scratch = std::env::temp_dir().join(format!("soft_sphere_ffi_{}.rs", std::process::id()));
     std::fs::write(&scratch, expanded(&source)).unwrap();
     let mut generated = Vec::new();
@@ -73,6 +87,10 @@ fn header_is_current() {
         "ss_forces_f64",
         "ss_law_f32",
         "dashpot_ratio",
+        "ss_table_evaluate_f64",
+        "ss_table_evaluate_f32",
+        "ss_neighbours",
+        "ss_history_f64",
     ] {
         assert!(
             generated.contains(symbol),

@@ -1,0 +1,979 @@
+//! The material table and the list entry: every pair of materials' law (given pair by pair, the
+//! rest by the kernel's mixing rules), the time step checked against every pair of materials
+//! present, and a whole neighbour list evaluated in one call over an engine's own arrays, as
+//! LAMMPS keeps them (flat per-atom arrays; a list of atoms, each with a count and a first
+//! neighbour; per-neighbour history values and touch flags). The contacts go through the
+//! kernel's list seam (`MaterialTable::evaluate`), so each gives the bits of one
+//! `ss_sphere_sphere_*` call with its pair's law, and a refused contact leaves every array the
+//! caller gave as it was.
+
+use soft_sphere::{
+    Backup, CheckedSphere, ContactList, ElasticMaterial, Float, Frictionless, HertzImpact,
+    HertzMixing, Law, LinearMaterial, LinearMixing, ListError, ListOutput, ListStats, Material,
+    MaterialTable, MindlinAA, MindlinAALuding, MindlinStateless, Mixing, ModelAA, ModelAALuding,
+    ParameterError, Sphere, SphereArrays, Stateless, TimeStep, Vec3,
+};
+
+use crate::{
+    SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_ERR_UNSTABLE_TIME_STEP, SS_MODEL_AA, SS_MODEL_AA_LUDING,
+    SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA, SS_MODEL_HERTZ_AA_LUDING,
+    SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, SS_OK,
+    SS_PARAMETER_NONE, Stored, contact_code, forces_of, parameter_code, rejected_parameter,
+    ss_forces, ss_sphere,
+};
+
+/// The most materials a table holds (LAMMPS atom types).
+pub const SS_MATERIALS_MAX: usize = 16;
+
+/// An array's length or a count is negative, past what the call can index, or disagrees with
+/// another (a history with fewer values per neighbour than the law keeps).
+pub const SS_ERR_LENGTH: i32 = 16;
+/// An atom of the list, or a neighbour, is past the atoms.
+pub const SS_ERR_INDEX: i32 = 17;
+/// A material (an atom's type) is past the table, or a pair of materials has no law: neither
+/// its own coefficients nor both materials' for the mixing rule.
+pub const SS_ERR_MATERIAL: i32 = 18;
+/// The table's time step has not been checked (`ss_table_prepare_*`) since it last changed.
+pub const SS_ERR_NOT_PREPARED: i32 = 19;
+
+/// What a table is made for: one family of laws for every pair of materials.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_table_config<F> {
+    /// `SS_MODEL_*`: every pair's law is of this family.
+    pub model: i32,
+    /// How many materials (at most `SS_MATERIALS_MAX`).
+    pub materials: usize,
+    /// `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
+    pub largest_impact_speed: F,
+    /// `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
+    pub largest_effective_radius: F,
+}
+
+/// The coefficients of a material, or of one pair of materials' contact. The linear laws read
+/// the first five, the Hertz laws Young's modulus, Poisson's ratio, restitution, the dashpot
+/// ratio and friction. The frictionless laws ignore the tangential ones.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ss_coefficients<F> {
+    /// k_n (N/m), linear laws.
+    pub normal_stiffness: F,
+    /// Normal restitution e, in [0, 1].
+    pub restitution: F,
+    /// k_t (N/m), linear laws.
+    pub tangential_stiffness: F,
+    /// The dashpot ratio eta_t / eta_n.
+    pub dashpot_ratio: F,
+    /// Coulomb mu.
+    pub friction: F,
+    /// Young's modulus E (Pa), Hertz laws.
+    pub youngs_modulus: F,
+    /// Poisson's ratio nu, in (-1, 0.5], Hertz laws.
+    pub poisson_ratio: F,
+}
+
+/// Why `ss_table_prepare_*` refused: the pair of materials and, for a refused step, the largest
+/// stable step of that pair.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ss_table_report<F> {
+    /// The two materials (-1 when the error is about none).
+    pub materials: [i64; 2],
+    /// `SS_PARAMETER_*` the error is about.
+    pub parameter: i32,
+    /// For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+    pub limit: F,
+}
+
+/// The atoms, as flat arrays of `count` entries (three per atom for vectors): owned atoms
+/// first, then ghosts. The material of atom `k` is `types[k] - first_type`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_atoms<F> {
+    /// How many atoms every array holds (LAMMPS: `nlocal + nghost`).
+    pub count: usize,
+    /// The atoms `[0, owned)` are this process's own (LAMMPS: `nlocal`).
+    pub owned: usize,
+    /// Centres (m), x y z per atom.
+    pub position: *const F,
+    /// Velocities (m/s), x y z per atom.
+    pub velocity: *const F,
+    /// Angular velocities (rad/s), x y z per atom.
+    pub angular_velocity: *const F,
+    /// Radii (m).
+    pub radius: *const F,
+    /// Masses (kg).
+    pub mass: *const F,
+    /// Types.
+    pub types: *const i32,
+    /// The type of material 0 (LAMMPS: 1).
+    pub first_type: i32,
+}
+
+/// A neighbour list as LAMMPS keeps it: `count` atoms (`atoms[0 .. count)`); atom `i`'s
+/// neighbours are `first_neighbour[i][0 .. neighbour_counts[i])`, each masked with
+/// `index_mask`. `neighbour_counts` and `first_neighbour` are indexed by atom, so they must hold
+/// an entry for every atom the list names.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_neighbours {
+    /// How many atoms the list holds (LAMMPS: `inum`).
+    pub count: usize,
+    /// The atoms (LAMMPS: `ilist`).
+    pub atoms: *const i32,
+    /// Per atom, how many neighbours (LAMMPS: `numneigh`).
+    pub neighbour_counts: *const i32,
+    /// Per atom, its first neighbour (LAMMPS: `firstneigh`).
+    pub first_neighbour: *const *const i32,
+    /// ANDed with each neighbour (LAMMPS: `NEIGHMASK`; -1 keeps every bit).
+    pub index_mask: i32,
+}
+
+/// The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
+/// `values` numbers from `first_value[i] + jj * values` and a touch flag at
+/// `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_history<F> {
+    /// Numbers per neighbour, at least `ss_table_state_values_*`.
+    pub values: usize,
+    /// Per atom, its first neighbour's values.
+    pub first_value: *const *mut F,
+    /// Per atom, its first neighbour's touch flag.
+    pub first_touch: *const *mut i32,
+}
+
+/// Where the forces go: added to `force` and `torque` (x y z per atom, `count` atoms), on every
+/// atom when `newton` is 1 (LAMMPS `newton_pair on`: ghosts' forces are sent home), else only
+/// on the owned atoms.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_loads<F> {
+    /// Forces (N), added to.
+    pub force: *mut F,
+    /// Torques (N m), added to.
+    pub torque: *mut F,
+    /// 1: every atom receives; 0: only the owned atoms.
+    pub newton: i32,
+}
+
+/// What an evaluation found, and which atoms an error is about.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ss_list_report {
+    /// Touching pairs.
+    pub contacts: usize,
+    /// Pairs at the Coulomb limit.
+    pub sliding: usize,
+    /// The atoms (indices into the arrays) an error is about; -1 when none.
+    pub atoms: [i64; 2],
+}
+
+/// A table: its coefficients as given, the laws and the step once prepared, and the working
+/// memory of evaluations (opaque to C).
+#[derive(Debug)]
+pub struct ss_table<F: Float> {
+    table: AnyTable<F>,
+}
+
+/// One family's table.
+#[derive(Debug)]
+struct Tabled<F: Float, X: Mixing<F>> {
+    mixing: X,
+    properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
+    materials: usize,
+    /// Each material's own coefficients, for the mixing rule.
+    own: [Option<X::Properties>; SS_MATERIALS_MAX],
+    /// Pairs given their own coefficients: their law is the mixing rule's of those with
+    /// themselves.
+    given: [[Option<X::Properties>; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
+    ready: Option<(MaterialTable<X::Law, SS_MATERIALS_MAX>, TimeStep<F>)>,
+    work: Workspace<F, <X::Law as Law>::State>,
+}
+
+/// The memory an evaluation gathers the list into and the kernel writes through.
+#[derive(Debug, Default)]
+struct Workspace<F, S> {
+    material: Vec<u32>,
+    pairs: Vec<[u32; 2]>,
+    states: Vec<S>,
+    saved: Vec<S>,
+    loads: Vec<Vec3<F>>,
+    force: Vec<Vec3<F>>,
+    torque: Vec<Vec3<F>>,
+}
+
+type Linear<F, T> = LinearMixing<F, T>;
+type Elastic<F, T> = HertzMixing<F, T>;
+
+#[derive(Debug)]
+enum AnyTable<F: Float> {
+    Stateless(Box<Tabled<F, Linear<F, Stateless<F>>>>),
+    ModelAA(Box<Tabled<F, Linear<F, ModelAA<F>>>>),
+    ModelAALuding(Box<Tabled<F, Linear<F, ModelAALuding<F>>>>),
+    Frictionless(Box<Tabled<F, Linear<F, Frictionless>>>),
+    HertzStateless(Box<Tabled<F, Elastic<F, MindlinStateless<F>>>>),
+    HertzAA(Box<Tabled<F, Elastic<F, MindlinAA<F>>>>),
+    HertzAALuding(Box<Tabled<F, Elastic<F, MindlinAALuding<F>>>>),
+    HertzFrictionless(Box<Tabled<F, Elastic<F, Frictionless>>>),
+}
+
+/// `$body` with `$t` bound to the family's table inside an [`AnyTable`].
+macro_rules! each_table {
+    ($any:expr, $t:pat => $body:expr) => {
+        match $any {
+            AnyTable::Stateless($t) => $body,
+            AnyTable::ModelAA($t) => $body,
+            AnyTable::ModelAALuding($t) => $body,
+            AnyTable::Frictionless($t) => $body,
+            AnyTable::HertzStateless($t) => $body,
+            AnyTable::HertzAA($t) => $body,
+            AnyTable::HertzAALuding($t) => $body,
+            AnyTable::HertzFrictionless($t) => $body,
+        }
+    };
+}
+
+fn linear<F: Float>(c: &ss_coefficients<F>) -> Result<LinearMaterial<F>, ParameterError> {
+    Ok(LinearMaterial {
+        normal_stiffness: c.normal_stiffness,
+        restitution: c.restitution,
+        tangential_stiffness: c.tangential_stiffness,
+        dashpot_ratio: c.dashpot_ratio,
+        friction: c.friction,
+    })
+}
+
+/// A frictionless law reads no tangential coefficient: valid placeholders stand in for them.
+fn linear_frictionless<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<LinearMaterial<F>, ParameterError> {
+    Ok(LinearMaterial {
+        tangential_stiffness: F::ONE,
+        dashpot_ratio: F::ZERO,
+        friction: F::ZERO,
+        ..linear(c)?
+    })
+}
+
+fn elastic<F: Float>(c: &ss_coefficients<F>) -> Result<ElasticMaterial<F>, ParameterError> {
+    Ok(ElasticMaterial {
+        elasticity: Material::new(c.youngs_modulus, c.poisson_ratio)?,
+        restitution: c.restitution,
+        dashpot_ratio: c.dashpot_ratio,
+        friction: c.friction,
+    })
+}
+
+fn elastic_frictionless<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<ElasticMaterial<F>, ParameterError> {
+    Ok(ElasticMaterial {
+        dashpot_ratio: F::ZERO,
+        friction: F::ZERO,
+        ..elastic(c)?
+    })
+}
+
+impl<F: Float, X: Mixing<F>> Tabled<F, X>
+where
+    <X::Law as Law>::State: Stored<F>,
+{
+    fn new(
+        mixing: X,
+        properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
+        materials: usize,
+    ) -> Box<Self> {
+        Box::new(Self {
+            mixing,
+            properties,
+            materials,
+            own: [None; SS_MATERIALS_MAX],
+            given: [[None; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
+            ready: None,
+            work: Workspace {
+                material: Vec::new(),
+                pairs: Vec::new(),
+                states: Vec::new(),
+                saved: Vec::new(),
+                loads: Vec::new(),
+                force: Vec::new(),
+                torque: Vec::new(),
+            },
+        })
+    }
+
+    /// Materials `a` and `b` given `c`: `a == b` is the material's own (and mixes with the
+    /// others); otherwise the pair's law is the rule's of `c` with itself.
+    fn set(&mut self, a: usize, b: usize, c: &ss_coefficients<F>) -> Result<(), (i32, i32)> {
+        if a >= self.materials || b >= self.materials {
+            return Err((SS_ERR_MATERIAL, SS_PARAMETER_NONE));
+        }
+        let refused = |e: ParameterError| (parameter_code(e), rejected_parameter(e));
+        let properties = (self.properties)(c).map_err(refused)?;
+        self.mixing.law(&properties, &properties).map_err(refused)?;
+        if a == b {
+            self.own[a] = Some(properties);
+        }
+        self.given[a][b] = Some(properties);
+        self.given[b][a] = Some(properties);
+        self.ready = None;
+        Ok(())
+    }
+
+    /// The law of materials `a` and `b`: their own coefficients', else the rule's of both
+    /// materials'.
+    fn law(&self, a: usize, b: usize) -> Result<X::Law, (i32, i32)> {
+        let refused = |e: ParameterError| (parameter_code(e), rejected_parameter(e));
+        match (self.given[a][b], self.own[a], self.own[b]) {
+            (Some(p), _, _) => self.mixing.law(&p, &p).map_err(refused),
+            (None, Some(p), Some(q)) => self.mixing.law(&p, &q).map_err(refused),
+            _ => Err((SS_ERR_MATERIAL, SS_PARAMETER_NONE)),
+        }
+    }
+
+    /// Builds every law and checks `dt` against each pair of materials present (the lightest
+    /// mass of each; absent where it is not a positive finite number).
+    fn prepare(&mut self, dt: F, lightest: &[F], report: &mut ss_table_report<F>) -> i32 {
+        self.ready = None;
+        let mut table: Option<MaterialTable<X::Law, SS_MATERIALS_MAX>> = None;
+        for a in 0..self.materials {
+            for b in a..self.materials {
+                report.materials = [a as i64, b as i64];
+                let law = match self.law(a, b) {
+                    Ok(law) => law,
+                    Err((code, parameter)) => {
+                        report.parameter = parameter;
+                        return code;
+                    }
+                };
+                let table = table.get_or_insert_with(|| MaterialTable::uniform(law));
+                if table.set(a, b, law).is_err() {
+                    return SS_ERR_MATERIAL;
+                }
+            }
+        }
+        let Some(table) = table else {
+            report.materials = [-1, -1];
+            return SS_ERR_MATERIAL;
+        };
+        // One sphere of each material present, of its lightest mass: the kernel checks the step
+        // against every pair of them.
+        if !lightest.iter().all(|m| m.is_finite()) {
+            report.materials = [-1, -1];
+            return crate::SS_ERR_NON_FINITE_INPUT;
+        }
+        let present = |m: F| m > F::ZERO;
+        let mut mass = Vec::new();
+        let mut material = Vec::new();
+        for (a, &m) in lightest.iter().enumerate().filter(|(_, m)| present(**m)) {
+            mass.push(m);
+            material.push(a as u32);
+        }
+        let zero = vec![Vec3::ZERO; mass.len()];
+        let spheres = SphereArrays {
+            position: &zero,
+            velocity: &zero,
+            angular_velocity: &zero,
+            radius: &vec![F::ONE; mass.len()],
+            mass: &mass,
+            material: &material,
+        };
+        let step = match table.time_step(dt, &spheres, &[]) {
+            Ok(step) => step,
+            Err(ListError::TimeStep { materials, error }) => {
+                report.materials = materials.map(i64::from);
+                report.parameter = rejected_parameter(error);
+                if let ParameterError::TimeStepUnstable { limit, .. } = error {
+                    report.limit = F::from_f64(limit);
+                }
+                return parameter_code(error);
+            }
+            Err(_) => return SS_ERR_MATERIAL,
+        };
+        report.materials = [-1, -1];
+        self.ready = Some((table, step));
+        SS_OK
+    }
+}
+
+/// A null pointer is refused only when there is something to read through it.
+fn present<T>(pointer: *const T, count: usize) -> bool {
+    count == 0 || !pointer.is_null()
+}
+
+/// Checks every pointer, count and index of the list, in list order.
+///
+/// # Safety
+/// As `ss_table_evaluate_*`.
+unsafe fn check_list<F>(
+    atoms: &ss_atoms<F>,
+    list: &ss_neighbours,
+    history: Option<(&ss_history<F>, usize)>,
+    report: &mut ss_list_report,
+) -> i32 {
+    let n = atoms.count;
+    let arrays = [
+        atoms.position.cast::<u8>(),
+        atoms.velocity.cast(),
+        atoms.angular_velocity.cast(),
+        atoms.radius.cast(),
+        atoms.mass.cast(),
+        atoms.types.cast(),
+    ];
+    if arrays.iter().any(|a| !present(*a, n)) {
+        return SS_ERR_NULL;
+    }
+    if n > u32::MAX as usize || atoms.owned > n || list.count > n {
+        return SS_ERR_LENGTH;
+    }
+    let lists = [
+        list.atoms.cast::<u8>(),
+        list.neighbour_counts.cast(),
+        list.first_neighbour.cast(),
+    ];
+    if lists.iter().any(|a| !present(*a, list.count)) {
+        return SS_ERR_NULL;
+    }
+    if let Some((h, needed)) = history {
+        if h.values < needed {
+            return SS_ERR_LENGTH;
+        }
+        if !present(h.first_value, list.count) || !present(h.first_touch, list.count) {
+            return SS_ERR_NULL;
+        }
+    }
+    for ii in 0..list.count {
+        // SAFETY: `atoms` holds `count` entries (the caller's promise).
+        let i = unsafe { *list.atoms.add(ii) };
+        report.atoms = [i64::from(i), -1];
+        if i < 0 || i as usize >= n {
+            return SS_ERR_INDEX;
+        }
+        let i = i as usize;
+        // SAFETY: the per-atom arrays hold an entry for every atom the list names.
+        let (count, first) =
+            unsafe { (*list.neighbour_counts.add(i), *list.first_neighbour.add(i)) };
+        if count < 0 {
+            return SS_ERR_LENGTH;
+        }
+        let count = count as usize;
+        if !present(first, count) {
+            return SS_ERR_NULL;
+        }
+        if let Some((h, _)) = history {
+            // SAFETY: as above.
+            let (values, touch) = unsafe { (*h.first_value.add(i), *h.first_touch.add(i)) };
+            if !present(values, count) || !present(touch, count) {
+                return SS_ERR_NULL;
+            }
+        }
+        for jj in 0..count {
+            // SAFETY: atom i's neighbours hold `count` entries.
+            let j = unsafe { *first.add(jj) } & list.index_mask;
+            if j < 0 || j as usize >= n {
+                report.atoms = [i as i64, i64::from(j)];
+                return SS_ERR_INDEX;
+            }
+        }
+    }
+    report.atoms = [-1, -1];
+    SS_OK
+}
+
+impl<F: Float, X: Mixing<F>> Tabled<F, X>
+where
+    <X::Law as Law>::State: Stored<F>,
+{
+    /// The list entry: checks, gathers, evaluates through the seam, and on success writes the
+    /// states (when `advance`), the touch flags and the forces back.
+    ///
+    /// # Safety
+    /// As `ss_table_evaluate_*`.
+    unsafe fn evaluate(
+        &mut self,
+        atoms: &ss_atoms<F>,
+        list: &ss_neighbours,
+        history: Option<&ss_history<F>>,
+        loads: &ss_loads<F>,
+        advance: bool,
+        report: &mut ss_list_report,
+    ) -> i32 {
+        let values = <<X::Law as Law>::State as Stored<F>>::VALUES;
+        let Some((table, step)) = &self.ready else {
+            return SS_ERR_NOT_PREPARED;
+        };
+        // SAFETY: forwarded contract.
+        let code = unsafe { check_list(atoms, list, history.map(|h| (h, values)), report) };
+        if code != SS_OK {
+            return code;
+        }
+        let n = atoms.count;
+        if !present(loads.force, n) || !present(loads.torque, n) {
+            return SS_ERR_NULL;
+        }
+        let vectors = |p: *const F| -> &[Vec3<F>] {
+            if n == 0 {
+                return &[];
+            }
+            // SAFETY: three numbers per atom (the caller's promise); `Vec3` is `repr(C)` of
+            // three `F`s, with `F`'s alignment.
+            unsafe { std::slice::from_raw_parts(p.cast::<Vec3<F>>(), n) }
+        };
+        let scalars = |p: *const F| -> &[F] {
+            if n == 0 {
+                return &[];
+            }
+            // SAFETY: one number per atom.
+            unsafe { std::slice::from_raw_parts(p, n) }
+        };
+        let work = &mut self.work;
+        work.material.clear();
+        for k in 0..n {
+            // SAFETY: one type per atom.
+            let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
+            if t < 0 || t as usize >= self.materials {
+                report.atoms = [k as i64, -1];
+                return SS_ERR_MATERIAL;
+            }
+            work.material.push(t as u32);
+        }
+        // Gather the pairs and their states in list order.
+        work.pairs.clear();
+        work.states.clear();
+        for_each_neighbour(list, |i, jj, j| {
+            work.pairs.push([i as u32, j as u32]);
+            work.states.push(match history {
+                // SAFETY: checked present; `values` numbers per neighbour.
+                Some(h) => unsafe {
+                    let at = (*h.first_value.add(i)).add(jj * h.values);
+                    Stored::read(std::slice::from_raw_parts(at, values))
+                },
+                None => Default::default(),
+            });
+        });
+        let contacts = work.pairs.len();
+        work.saved.resize(contacts, Default::default());
+        work.loads.resize(2 * n, Vec3::ZERO);
+        work.force.clear();
+        work.force.resize(n, Vec3::ZERO);
+        work.torque.clear();
+        work.torque.resize(n, Vec3::ZERO);
+        let spheres = SphereArrays {
+            position: vectors(atoms.position),
+            velocity: vectors(atoms.velocity),
+            angular_velocity: vectors(atoms.angular_velocity),
+            radius: scalars(atoms.radius),
+            mass: scalars(atoms.mass),
+            material: &work.material,
+        };
+        let outcome = table.evaluate(
+            *step,
+            &spheres,
+            ContactList {
+                pairs: &work.pairs,
+                shifts: &[],
+                pair_states: &mut work.states,
+                walls: &[],
+                wall_states: &mut [],
+            },
+            ListOutput {
+                force: &mut work.force,
+                torque: &mut work.torque,
+                backup: Backup {
+                    states: &mut work.saved,
+                    loads: &mut work.loads,
+                },
+                records: None,
+            },
+        );
+        let stats: ListStats<F> = match outcome {
+            Ok(stats) => stats,
+            Err(error) => return list_code(error, &work.pairs, report),
+        };
+        report.contacts = stats.pair_contacts;
+        report.sliding = stats.sliding_contacts;
+        // Scatter: states (when advancing) and touch flags, in list order again.
+        if let Some(h) = history {
+            let mut k = 0;
+            for_each_neighbour(list, |i, jj, j| {
+                let (a, b) = (spheres.position[i], spheres.position[j]);
+                let reach = spheres.radius[i] + spheres.radius[j];
+                // The kernel's own test of touching (the same arithmetic).
+                let touching = (b - a).norm_squared() < reach * reach;
+                // SAFETY: checked present; `values` numbers and one flag per neighbour.
+                unsafe {
+                    *(*h.first_touch.add(i)).add(jj) = i32::from(touching);
+                    if advance && values > 0 {
+                        let at = (*h.first_value.add(i)).add(jj * h.values);
+                        work.states[k].write(std::slice::from_raw_parts_mut(at, values));
+                    }
+                }
+                k += 1;
+            });
+        }
+        let receivers = if loads.newton == 1 { n } else { atoms.owned };
+        for (out, sums) in [(loads.force, &work.force), (loads.torque, &work.torque)] {
+            // SAFETY: three numbers per atom; not overlapping the inputs (the caller's promise).
+            let out = unsafe { std::slice::from_raw_parts_mut(out, 3 * n) };
+            for (place, sum) in out.chunks_exact_mut(3).zip(&sums[..receivers]) {
+                place[0] += sum.x;
+                place[1] += sum.y;
+                place[2] += sum.z;
+            }
+        }
+        SS_OK
+    }
+
+    /// One pair's contact with the law of its materials, its state read and not written (for a
+    /// host's per-pair report, such as LAMMPS's `single()`).
+    fn pair(
+        &self,
+        (a, b): (usize, usize),
+        (i, j): (&ss_sphere<F>, &ss_sphere<F>),
+        values: Option<&[F]>,
+        out: &mut ss_forces<F>,
+    ) -> i32 {
+        let Some((table, step)) = &self.ready else {
+            return SS_ERR_NOT_PREPARED;
+        };
+        let Some(law) = table.law(a, b) else {
+            return SS_ERR_MATERIAL;
+        };
+        let mut state = match values {
+            Some(values) => Stored::read(values),
+            None => Default::default(),
+        };
+        let (i, j): (Sphere<F>, Sphere<F>) = ((*i).into(), (*j).into());
+        let i = match CheckedSphere::new(i) {
+            Ok(i) => i,
+            Err(e) => return contact_code(e),
+        };
+        let j = match CheckedSphere::new(j) {
+            Ok(j) => j,
+            Err(e) => return contact_code(e),
+        };
+        match law.at(*step).sphere_sphere(&i, &j, &mut state) {
+            Ok(interaction) => {
+                *out = forces_of(interaction);
+                SS_OK
+            }
+            Err(e) => contact_code(e),
+        }
+    }
+}
+
+/// Calls `f(i, jj, j)` for every neighbour of the (checked) list, in list order.
+fn for_each_neighbour(list: &ss_neighbours, mut f: impl FnMut(usize, usize, usize)) {
+    for ii in 0..list.count {
+        // SAFETY: checked by `check_list`.
+        unsafe {
+            let i = *list.atoms.add(ii) as usize;
+            let count = *list.neighbour_counts.add(i) as usize;
+            let first = *list.first_neighbour.add(i);
+            for jj in 0..count {
+                f(i, jj, (*first.add(jj) & list.index_mask) as usize);
+            }
+        }
+    }
+}
+
+/// The code of a seam refusal, with the atoms it is about.
+fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_list_report) -> i32 {
+    let atoms = |pair: usize| pairs[pair].map(i64::from);
+    match error {
+        ListError::Sphere { sphere, error } => {
+            report.atoms = [sphere as i64, -1];
+            contact_code(error)
+        }
+        ListError::Pair { pair, error } => {
+            report.atoms = atoms(pair);
+            contact_code(error)
+        }
+        ListError::PairIndex { pair } => {
+            report.atoms = atoms(pair);
+            SS_ERR_INDEX
+        }
+        ListError::Material { sphere, .. } => {
+            report.atoms = [sphere as i64, -1];
+            SS_ERR_MATERIAL
+        }
+        ListError::Length(_) | ListError::Shift { .. } => SS_ERR_LENGTH,
+        ListError::WallMaterial { .. } => SS_ERR_MATERIAL,
+        ListError::Wall { error, .. } => contact_code(error),
+        ListError::TimeStep { .. } => SS_ERR_UNSTABLE_TIME_STEP,
+    }
+}
+
+fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> {
+    let m = config.materials;
+    if m == 0 || m > SS_MATERIALS_MAX {
+        return Err(SS_ERR_MATERIAL);
+    }
+    let impact = HertzImpact {
+        speed: config.largest_impact_speed,
+        effective_radius: config.largest_effective_radius,
+    };
+    let hertz = (SS_MODEL_HERTZ_FRICTIONLESS..=SS_MODEL_HERTZ_AA_LUDING).contains(&config.model);
+    if hertz {
+        // The declared impact is checked by the Hertz law: probe it with a valid material.
+        let probe = ElasticMaterial {
+            elasticity: Material::new(F::ONE, F::ZERO).map_err(parameter_code)?,
+            restitution: F::HALF,
+            dashpot_ratio: F::ZERO,
+            friction: F::ZERO,
+        };
+        HertzMixing::new(impact, MindlinAA)
+            .law(&probe, &probe)
+            .map_err(parameter_code)?;
+    }
+    Ok(match config.model {
+        SS_MODEL_STATELESS => {
+            AnyTable::Stateless(Tabled::new(LinearMixing::new(Stateless), linear, m))
+        }
+        SS_MODEL_AA => AnyTable::ModelAA(Tabled::new(LinearMixing::new(ModelAA), linear, m)),
+        SS_MODEL_AA_LUDING => {
+            AnyTable::ModelAALuding(Tabled::new(LinearMixing::new(ModelAALuding), linear, m))
+        }
+        SS_MODEL_FRICTIONLESS => AnyTable::Frictionless(Tabled::new(
+            LinearMixing::new(|_| Frictionless),
+            linear_frictionless,
+            m,
+        )),
+        SS_MODEL_HERTZ_STATELESS => AnyTable::HertzStateless(Tabled::new(
+            HertzMixing::new(impact, MindlinStateless),
+            elastic,
+            m,
+        )),
+        SS_MODEL_HERTZ_AA => {
+            AnyTable::HertzAA(Tabled::new(HertzMixing::new(impact, MindlinAA), elastic, m))
+        }
+        SS_MODEL_HERTZ_AA_LUDING => AnyTable::HertzAALuding(Tabled::new(
+            HertzMixing::new(impact, MindlinAALuding),
+            elastic,
+            m,
+        )),
+        SS_MODEL_HERTZ_FRICTIONLESS => AnyTable::HertzFrictionless(Tabled::new(
+            HertzMixing::new(impact, |_| Frictionless),
+            elastic_frictionless,
+            m,
+        )),
+        _ => return Err(SS_ERR_UNKNOWN_MODEL),
+    })
+}
+
+/// # Safety
+/// As the exported table constructors.
+pub(crate) unsafe fn table_new<F: Float>(
+    config: *const ss_table_config<F>,
+    out: *mut *mut ss_table<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(config), false) = (unsafe { config.as_ref() }, out.is_null()) else {
+        return SS_ERR_NULL;
+    };
+    match new_table(config) {
+        Ok(table) => {
+            // SAFETY: out was checked non-null.
+            unsafe { *out = Box::into_raw(Box::new(ss_table { table })) };
+            SS_OK
+        }
+        Err(code) => code,
+    }
+}
+
+/// # Safety
+/// As the exported table destructors.
+pub(crate) unsafe fn table_free<F: Float>(table: *mut ss_table<F>) {
+    if !table.is_null() {
+        // SAFETY: the handle came from Box::into_raw in table_new.
+        drop(unsafe { Box::from_raw(table) });
+    }
+}
+
+/// # Safety
+/// As the exported pair setters.
+pub(crate) unsafe fn table_set<F: Float>(
+    table: *mut ss_table<F>,
+    a: usize,
+    b: usize,
+    coefficients: *const ss_coefficients<F>,
+    parameter: *mut i32,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(table), Some(c)) = (unsafe { table.as_mut() }, unsafe { coefficients.as_ref() })
+    else {
+        return SS_ERR_NULL;
+    };
+    let outcome = each_table!(&mut table.table, t => t.set(a, b, c));
+    let (code, rejected) = match outcome {
+        Ok(()) => (SS_OK, SS_PARAMETER_NONE),
+        Err(refused) => refused,
+    };
+    // SAFETY: null is allowed; the caller promises validity otherwise.
+    if let Some(parameter) = unsafe { parameter.as_mut() } {
+        *parameter = rejected;
+    }
+    code
+}
+
+/// # Safety
+/// As the exported preparers.
+pub(crate) unsafe fn table_prepare<F: Float>(
+    table: *mut ss_table<F>,
+    time_step: F,
+    lightest_mass: *const F,
+    report: *mut ss_table_report<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(table) = (unsafe { table.as_mut() }) else {
+        return SS_ERR_NULL;
+    };
+    let materials = each_table!(&table.table, t => t.materials);
+    if lightest_mass.is_null() {
+        return SS_ERR_NULL;
+    }
+    // SAFETY: one mass per material (the caller's promise).
+    let lightest = unsafe { std::slice::from_raw_parts(lightest_mass, materials) };
+    let mut found = ss_table_report {
+        materials: [-1, -1],
+        parameter: SS_PARAMETER_NONE,
+        limit: F::ZERO,
+    };
+    let code = each_table!(&mut table.table, t => t.prepare(time_step, lightest, &mut found));
+    // SAFETY: null is allowed; the caller promises validity otherwise.
+    if let Some(report) = unsafe { report.as_mut() } {
+        *report = found;
+    }
+    code
+}
+
+/// # Safety
+/// As the exported list entries.
+pub(crate) unsafe fn table_evaluate<F: Float>(
+    table: *mut ss_table<F>,
+    atoms: *const ss_atoms<F>,
+    list: *const ss_neighbours,
+    history: *const ss_history<F>,
+    loads: *const ss_loads<F>,
+    advance: i32,
+    report: *mut ss_list_report,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(table), Some(atoms), Some(list), Some(loads)) = (unsafe {
+        (
+            table.as_mut(),
+            atoms.as_ref(),
+            list.as_ref(),
+            loads.as_ref(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    // SAFETY: null is allowed (no history).
+    let history = unsafe { history.as_ref() };
+    let mut found = ss_list_report {
+        contacts: 0,
+        sliding: 0,
+        atoms: [-1, -1],
+    };
+    let code = each_table!(&mut table.table, t => {
+        // SAFETY: forwarded contract.
+        unsafe { t.evaluate(atoms, list, history, loads, advance != 0, &mut found) }
+    });
+    // SAFETY: null is allowed; the caller promises validity otherwise.
+    if let Some(report) = unsafe { report.as_mut() } {
+        *report = found;
+    }
+    code
+}
+
+/// # Safety
+/// As the exported per-pair calls.
+pub(crate) unsafe fn table_pair<F: Float>(
+    table: *const ss_table<F>,
+    a: usize,
+    b: usize,
+    (i, j): (*const ss_sphere<F>, *const ss_sphere<F>),
+    values: *const F,
+    out: *mut ss_forces<F>,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(table), Some(i), Some(j), Some(out)) =
+        (unsafe { (table.as_ref(), i.as_ref(), j.as_ref(), out.as_mut()) })
+    else {
+        return SS_ERR_NULL;
+    };
+    each_table!(&table.table, t => table_pair_in(&**t, (a, b), (i, j), values, out))
+}
+
+fn table_pair_in<F: Float, X: Mixing<F>>(
+    t: &Tabled<F, X>,
+    materials: (usize, usize),
+    spheres: (&ss_sphere<F>, &ss_sphere<F>),
+    values: *const F,
+    out: &mut ss_forces<F>,
+) -> i32
+where
+    <X::Law as Law>::State: Stored<F>,
+{
+    let count = <<X::Law as Law>::State as Stored<F>>::VALUES;
+    let values = if values.is_null() || count == 0 {
+        None
+    } else {
+        // SAFETY: `count` numbers (the caller's promise: `ss_table_state_values_*`).
+        Some(unsafe { std::slice::from_raw_parts(values, count) })
+    };
+    t.pair(materials, spheres, values, out)
+}
+
+/// How many numbers the table's law keeps per contact.
+pub(crate) fn state_values<F: Float>(table: *const ss_table<F>) -> usize {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(table) = (unsafe { table.as_ref() }) else {
+        return 0;
+    };
+    each_table!(&table.table, t => values_of(&**t))
+}
+
+fn values_of<F: Float, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
+where
+    <X::Law as Law>::State: Stored<F>,
+{
+    <<X::Law as Law>::State as Stored<F>>::VALUES
+}
+
+/// # Safety
+/// As the exported state mirrors.
+pub(crate) unsafe fn table_mirror<F: Float>(
+    table: *const ss_table<F>,
+    source: *const F,
+    target: *mut F,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(table) = (unsafe { table.as_ref() }) else {
+        return SS_ERR_NULL;
+    };
+    each_table!(&table.table, t => mirror_in(&**t, source, target))
+}
+
+fn mirror_in<F: Float, X: Mixing<F>>(_: &Tabled<F, X>, source: *const F, target: *mut F) -> i32
+where
+    <X::Law as Law>::State: Stored<F>,
+{
+    let count = <<X::Law as Law>::State as Stored<F>>::VALUES;
+    if count == 0 {
+        return SS_OK;
+    }
+    if source.is_null() || target.is_null() {
+        return SS_ERR_NULL;
+    }
+    // SAFETY: `count` numbers each (the caller's promise); read fully before writing, so they
+    // may be the same.
+    let state: <X::Law as Law>::State =
+        Stored::read(unsafe { std::slice::from_raw_parts(source, count) });
+    state
+        .mirrored()
+        .write(unsafe { std::slice::from_raw_parts_mut(target, count) });
+    SS_OK
+}

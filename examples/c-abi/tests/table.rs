@@ -1,0 +1,786 @@
+//! The list entry (`ss_table_evaluate_*`) as LAMMPS calls it: flat atom arrays, a half
+//! neighbour list of per-atom runs, per-neighbour history and touch flags, forces added with the
+//! `newton_pair` rule. Each contact must give the bits of one `ss_sphere_sphere_*` call with the
+//! law the mixing rule makes (geometric means; Hertz's and Mindlin's moduli), the forces summed
+//! in list order; every bad count, index and value must be an error code that leaves every
+//! array as it was.
+
+use std::ptr::{null, null_mut};
+
+use host_tests::random::Xorshift;
+use soft_sphere_ffi::*;
+
+const MODELS: [i32; 8] = [
+    SS_MODEL_STATELESS,
+    SS_MODEL_AA,
+    SS_MODEL_AA_LUDING,
+    SS_MODEL_FRICTIONLESS,
+    SS_MODEL_HERTZ_FRICTIONLESS,
+    SS_MODEL_HERTZ_STATELESS,
+    SS_MODEL_HERTZ_AA,
+    SS_MODEL_HERTZ_AA_LUDING,
+];
+
+const DT: f64 = 1.0e-7;
+const SPEED: f64 = 10.0;
+const RADIUS: f64 = 1.2e-3;
+
+/// Three materials (soft, for the Hertz laws: the overlaps are the linear laws'), and a rough
+/// pair given its own.
+fn material(m: usize) -> ss_coefficients<f64> {
+    [
+        ss_coefficients {
+            normal_stiffness: 1.0e4,
+            restitution: 0.9,
+            tangential_stiffness: 2.9e3,
+            dashpot_ratio: 0.5,
+            friction: 0.3,
+            youngs_modulus: 5.0e6,
+            poisson_ratio: 0.2,
+        },
+        ss_coefficients {
+            normal_stiffness: 4.0e4,
+            restitution: 0.7,
+            tangential_stiffness: 1.1e4,
+            dashpot_ratio: 0.4,
+            friction: 0.5,
+            youngs_modulus: 2.0e7,
+            poisson_ratio: 0.3,
+        },
+        ss_coefficients {
+            normal_stiffness: 2.0e4,
+            restitution: 0.8,
+            tangential_stiffness: 6.0e3,
+            dashpot_ratio: 0.3,
+            friction: 0.8,
+            youngs_modulus: 1.0e7,
+            poisson_ratio: 0.25,
+        },
+    ][m]
+}
+
+/// Materials 0, 1 and 2 with their own coefficients, except that the pair (0, 2) is given its
+/// own rough ones.
+fn rough() -> ss_coefficients<f64> {
+    ss_coefficients {
+        friction: 0.9,
+        restitution: 0.5,
+        ..material(2)
+    }
+}
+
+/// The coefficients a pair's law is made of, by the rule, computed here: `(a, b)`'s geometric
+/// means, or Hertz's `E*` and Mindlin's `G*` from both materials.
+fn reference_params(model: i32, a: usize, b: usize) -> ss_params<f64> {
+    let (p, q) = if (a, b) == (0, 2) || (a, b) == (2, 0) {
+        (rough(), rough())
+    } else {
+        (material(a), material(b))
+    };
+    let mean = |x: f64, y: f64| if x == y { x } else { (x * y).sqrt() };
+    let mut params = ss_params {
+        model,
+        normal_stiffness: mean(p.normal_stiffness, q.normal_stiffness),
+        restitution: mean(p.restitution, q.restitution),
+        tangential_stiffness: mean(p.tangential_stiffness, q.tangential_stiffness),
+        dashpot_ratio: mean(p.dashpot_ratio, q.dashpot_ratio),
+        friction: mean(p.friction, q.friction),
+        time_step: DT,
+        smallest_effective_mass: 5.0e-6,
+        largest_impact_speed: SPEED,
+        largest_effective_radius: RADIUS,
+        ..Default::default()
+    };
+    let (pm, qm) = (
+        ss_material {
+            youngs_modulus: p.youngs_modulus,
+            poisson_ratio: p.poisson_ratio,
+        },
+        ss_material {
+            youngs_modulus: q.youngs_modulus,
+            poisson_ratio: q.poisson_ratio,
+        },
+    );
+    // SAFETY: valid pointers.
+    let code = unsafe {
+        ss_effective_moduli_f64(
+            &pm,
+            &qm,
+            &mut params.effective_modulus,
+            &mut params.effective_shear_modulus,
+        )
+    };
+    assert_eq!(code, SS_OK);
+    if model == SS_MODEL_FRICTIONLESS {
+        params.tangential_stiffness = 1.0;
+    }
+    params
+}
+
+fn table(model: i32) -> *mut ss_table<f64> {
+    let config = ss_table_config {
+        model,
+        materials: 3,
+        largest_impact_speed: SPEED,
+        largest_effective_radius: RADIUS,
+    };
+    let mut table = null_mut();
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        for m in 0..3 {
+            assert_eq!(
+                ss_table_set_f64(table, m, m, &material(m), null_mut()),
+                SS_OK
+            );
+        }
+        assert_eq!(ss_table_set_f64(table, 2, 0, &rough(), null_mut()), SS_OK);
+    }
+    table
+}
+
+fn prepare(table: *mut ss_table<f64>, masses: [f64; 3]) -> (i32, ss_table_report<f64>) {
+    let mut report = ss_table_report::<f64>::default();
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, DT, masses.as_ptr(), &mut report) };
+    (code, report)
+}
+
+/// What LAMMPS hands a pair style: atoms owned then ghost, a half list of per-atom runs, and
+/// the history beside it.
+#[derive(Clone, Debug, PartialEq)]
+struct Host {
+    owned: usize,
+    position: Vec<f64>,
+    velocity: Vec<f64>,
+    spin: Vec<f64>,
+    radius: Vec<f64>,
+    mass: Vec<f64>,
+    types: Vec<i32>,
+    list: Vec<i32>,
+    counts: Vec<i32>,
+    neighbours: Vec<Vec<i32>>,
+    values: usize,
+    history: Vec<Vec<f64>>,
+    touch: Vec<Vec<i32>>,
+    force: Vec<f64>,
+    torque: Vec<f64>,
+}
+
+/// Pointers into a host's arrays, built just before a call.
+struct Views {
+    first_neighbour: Vec<*const i32>,
+    first_value: Vec<*mut f64>,
+    first_touch: Vec<*mut i32>,
+}
+
+impl Host {
+    /// 60 atoms (45 owned) of three types jittered on a lattice tighter than their diameters,
+    /// so that most neighbours touch; random velocities, spins and stored values.
+    fn new(seed: u64, values: usize) -> Self {
+        let mut random = Xorshift::new(seed);
+        let n = 60;
+        let mut host = Host {
+            owned: 45,
+            position: Vec::new(),
+            velocity: Vec::new(),
+            spin: Vec::new(),
+            radius: Vec::new(),
+            mass: Vec::new(),
+            types: Vec::new(),
+            list: Vec::new(),
+            counts: vec![0; n],
+            neighbours: vec![Vec::new(); n],
+            values,
+            history: vec![Vec::new(); n],
+            touch: vec![Vec::new(); n],
+            force: (0..3 * n).map(|_| random.unit() - 0.5).collect(),
+            torque: (0..3 * n).map(|_| 1e-3 * (random.unit() - 0.5)).collect(),
+        };
+        for k in 0..n {
+            let cell = [k % 4, (k / 4) % 4, k / 16].map(|c| c as f64 * 1.9e-3);
+            for c in cell {
+                host.position.push(c + 0.04e-3 * (random.unit() - 0.5));
+                host.velocity.push(0.2 * (random.unit() - 0.5));
+                host.spin.push(100.0 * (random.unit() - 0.5));
+            }
+            let r = 1.0e-3 * (1.0 + 0.1 * random.unit());
+            host.radius.push(r);
+            host.mass
+                .push(2500.0 * 4.0 / 3.0 * std::f64::consts::PI * r * r * r);
+            host.types.push(1 + (k % 3) as i32);
+        }
+        for i in 0..host.owned {
+            host.list.push(i as i32);
+            for j in i + 1..n {
+                let d: f64 = (0..3)
+                    .map(|c| host.position[3 * i + c] - host.position[3 * j + c])
+                    .map(|x| x * x)
+                    .sum::<f64>()
+                    .sqrt();
+                if d < host.radius[i] + host.radius[j] + 0.2e-3 {
+                    host.neighbours[i].push(j as i32);
+                    host.touch[i].push(0);
+                    for _ in 0..values {
+                        host.history[i].push(1e-6 * (random.unit() - 0.5));
+                    }
+                }
+            }
+            host.counts[i] = host.neighbours[i].len() as i32;
+        }
+        host
+    }
+
+    fn views(&mut self) -> Views {
+        Views {
+            first_neighbour: self.neighbours.iter().map(|v| v.as_ptr()).collect(),
+            first_value: self.history.iter_mut().map(|v| v.as_mut_ptr()).collect(),
+            first_touch: self.touch.iter_mut().map(|v| v.as_mut_ptr()).collect(),
+        }
+    }
+
+    /// Calls the list entry over this host's arrays.
+    fn evaluate(
+        &mut self,
+        table: *mut ss_table<f64>,
+        newton: i32,
+        advance: i32,
+        edit: impl FnOnce(&mut ss_atoms<f64>, &mut ss_neighbours, &mut ss_history<f64>),
+    ) -> (i32, ss_list_report) {
+        let views = self.views();
+        let mut atoms = ss_atoms::<f64> {
+            count: self.radius.len(),
+            owned: self.owned,
+            position: self.position.as_ptr(),
+            velocity: self.velocity.as_ptr(),
+            angular_velocity: self.spin.as_ptr(),
+            radius: self.radius.as_ptr(),
+            mass: self.mass.as_ptr(),
+            types: self.types.as_ptr(),
+            first_type: 1,
+        };
+        let mut list = ss_neighbours {
+            count: self.list.len(),
+            atoms: self.list.as_ptr(),
+            neighbour_counts: self.counts.as_ptr(),
+            first_neighbour: views.first_neighbour.as_ptr(),
+            index_mask: 0x1FFF_FFFF,
+        };
+        let mut history = ss_history::<f64> {
+            values: self.values,
+            first_value: views.first_value.as_ptr(),
+            first_touch: views.first_touch.as_ptr(),
+        };
+        edit(&mut atoms, &mut list, &mut history);
+        let loads = ss_loads::<f64> {
+            force: self.force.as_mut_ptr(),
+            torque: self.torque.as_mut_ptr(),
+            newton,
+        };
+        let mut report = ss_list_report::default();
+        // SAFETY: every pointer into this host's arrays, as long as they say.
+        let code = unsafe {
+            ss_table_evaluate_f64(table, &atoms, &list, &history, &loads, advance, &mut report)
+        };
+        (code, report)
+    }
+
+    fn sphere(&self, k: usize) -> ss_sphere<f64> {
+        let v = |a: &[f64]| ss_vec3 {
+            x: a[3 * k],
+            y: a[3 * k + 1],
+            z: a[3 * k + 2],
+        };
+        ss_sphere {
+            position: v(&self.position),
+            velocity: v(&self.velocity),
+            angular_velocity: v(&self.spin),
+            radius: self.radius[k],
+            mass: self.mass[k],
+        }
+    }
+
+    /// The same step one pair at a time through `ss_sphere_sphere_f64`, each pair's law made
+    /// from `reference_params`: forces summed from zero in list order, then added where the
+    /// `newton_pair` rule sends them.
+    fn one_at_a_time(&mut self, model: i32, newton: i32) -> usize {
+        let n = self.radius.len();
+        let (mut force, mut torque) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
+        let mut touching = 0;
+        for &i in &self.list.clone() {
+            let i = i as usize;
+            for (jj, &j) in self.neighbours[i].clone().iter().enumerate() {
+                let j = (j & 0x1FFF_FFFF) as usize;
+                let (a, b) = (self.types[i] as usize - 1, self.types[j] as usize - 1);
+                let params = reference_params(model, a, b);
+                let mut law = null_mut();
+                let mut state = ss_state::default();
+                let stored = &mut self.history[i][jj * self.values..(jj + 1) * self.values];
+                match stored.len() {
+                    3 => {
+                        state.displacement = ss_vec3 {
+                            x: stored[0],
+                            y: stored[1],
+                            z: stored[2],
+                        }
+                    }
+                    4 => {
+                        state.spring_force = ss_vec3 {
+                            x: stored[0],
+                            y: stored[1],
+                            z: stored[2],
+                        };
+                        state.contact_radius = stored[3];
+                    }
+                    _ => {}
+                }
+                let mut out = ss_forces::default();
+                // SAFETY: valid pointers.
+                unsafe {
+                    assert_eq!(ss_law_new_f64(&params, &mut law), SS_OK);
+                    let code = ss_sphere_sphere_f64(
+                        law,
+                        &self.sphere(i),
+                        &self.sphere(j),
+                        &mut state,
+                        &mut out,
+                    );
+                    assert_eq!(code, SS_OK);
+                    ss_law_free_f64(law);
+                }
+                let stored = &mut self.history[i][jj * self.values..(jj + 1) * self.values];
+                match stored.len() {
+                    3 => stored.copy_from_slice(&[
+                        state.displacement.x,
+                        state.displacement.y,
+                        state.displacement.z,
+                    ]),
+                    4 => stored.copy_from_slice(&[
+                        state.spring_force.x,
+                        state.spring_force.y,
+                        state.spring_force.z,
+                        state.contact_radius,
+                    ]),
+                    _ => {}
+                }
+                self.touch[i][jj] = out.touching;
+                touching += out.touching as usize;
+                if out.touching == 1 {
+                    let on_j = [out.force_on_j.x, out.force_on_j.y, out.force_on_j.z];
+                    let (t_i, t_j) = (out.torque_on_i, out.torque_on_j);
+                    for (c, (ti, tj)) in [(t_i.x, t_j.x), (t_i.y, t_j.y), (t_i.z, t_j.z)]
+                        .into_iter()
+                        .enumerate()
+                    {
+                        force[3 * i + c] -= on_j[c];
+                        force[3 * j + c] += on_j[c];
+                        torque[3 * i + c] += ti;
+                        torque[3 * j + c] += tj;
+                    }
+                }
+            }
+        }
+        let receivers = if newton == 1 { n } else { self.owned };
+        for k in 0..3 * receivers {
+            self.force[k] += force[k];
+            self.torque[k] += torque[k];
+        }
+        touching
+    }
+}
+
+fn values_of(model: i32) -> usize {
+    match model {
+        SS_MODEL_AA | SS_MODEL_AA_LUDING => 3,
+        SS_MODEL_HERTZ_AA | SS_MODEL_HERTZ_AA_LUDING => 4,
+        _ => 0,
+    }
+}
+
+fn bits(values: &[f64]) -> Vec<u64> {
+    values.iter().map(|x| x.to_bits()).collect()
+}
+
+#[test]
+fn a_list_gives_the_bits_of_one_pair_at_a_time_for_every_law_and_newton_rule() {
+    for model in MODELS {
+        let table = table(model);
+        assert_eq!(
+            prepare(table, [1e-5; 3]),
+            (
+                SS_OK,
+                ss_table_report {
+                    materials: [-1, -1],
+                    ..Default::default()
+                }
+            ),
+            "model {model}"
+        );
+        // SAFETY: a valid table.
+        let values = unsafe { ss_table_state_values_f64(table) };
+        assert_eq!(values, values_of(model), "model {model}");
+        for newton in [0, 1] {
+            let mut host = Host::new(11 + model as u64, values.max(1));
+            let mut expected = host.clone();
+            let mut touching = 0;
+            // Three steps, so that stored springs carry from one to the next.
+            for _ in 0..3 {
+                let (code, report) = host.evaluate(table, newton, 1, |_, _, _| {});
+                assert_eq!(code, SS_OK, "model {model}");
+                touching = expected.one_at_a_time(model, newton);
+                assert_eq!(report.contacts, touching, "model {model}");
+            }
+            assert!(touching > 40, "the scene must have contacts: {touching}");
+            assert_eq!(bits(&host.force), bits(&expected.force), "model {model}");
+            assert_eq!(bits(&host.torque), bits(&expected.torque), "model {model}");
+            assert_eq!(host.touch, expected.touch, "model {model}");
+            for (a, b) in host.history.iter().zip(&expected.history) {
+                assert_eq!(bits(a), bits(b), "model {model}");
+            }
+            if newton == 0 {
+                // Ghosts receive nothing.
+                let start = Host::new(11 + model as u64, values.max(1));
+                assert_eq!(bits(&host.force[3 * 45..]), bits(&start.force[3 * 45..]));
+            }
+        }
+        // SAFETY: from ss_table_new_f64.
+        unsafe { ss_table_free_f64(table) };
+    }
+}
+
+#[test]
+fn the_setup_evaluation_leaves_the_history_and_sets_the_touch_flags() {
+    let table = table(SS_MODEL_AA);
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    let mut host = Host::new(5, 3);
+    let before = host.history.clone();
+    let (code, report) = host.evaluate(table, 0, 0, |_, _, _| {});
+    assert_eq!(code, SS_OK);
+    assert_eq!(host.history, before);
+    let touching: i32 = host.touch.iter().flatten().sum();
+    assert_eq!(touching as usize, report.contacts);
+    assert!(touching > 40);
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
+/// Every bad input: its code, the atoms it names, and nothing changed.
+#[test]
+fn bad_lists_are_refused_with_nothing_changed() {
+    type Edit = fn(&mut ss_atoms<f64>, &mut ss_neighbours, &mut ss_history<f64>);
+    let cases: [(&str, Edit, i32, [i64; 2]); 8] = [
+        (
+            "null positions",
+            |a, _, _| a.position = null(),
+            SS_ERR_NULL,
+            [-1, -1],
+        ),
+        (
+            "owned past the atoms",
+            |a, _, _| a.owned = a.count + 1,
+            SS_ERR_LENGTH,
+            [-1, -1],
+        ),
+        (
+            "list longer than the atoms",
+            |a, l, _| l.count = a.count + 1,
+            SS_ERR_LENGTH,
+            [-1, -1],
+        ),
+        (
+            "too few history values",
+            |_, _, h| h.values = 2,
+            SS_ERR_LENGTH,
+            [-1, -1],
+        ),
+        (
+            "a type past the table",
+            |a, _, _| a.first_type = 2,
+            SS_ERR_MATERIAL,
+            [0, -1],
+        ),
+        (
+            "null first neighbour",
+            |_, l, _| l.first_neighbour = null(),
+            SS_ERR_NULL,
+            [-1, -1],
+        ),
+        (
+            "the list truncated (mask)",
+            |_, l, _| l.index_mask = 0,
+            SS_ERR_OK_MARKER,
+            [-1, -1],
+        ),
+        (
+            "null touch flags",
+            |_, _, h| h.first_touch = null(),
+            SS_ERR_NULL,
+            [-1, -1],
+        ),
+    ];
+    let table = table(SS_MODEL_AA);
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    for (name, edit, code, atoms) in cases {
+        let mut host = Host::new(3, 3);
+        let before = host.clone();
+        let (got, report) = host.evaluate(table, 0, 1, edit);
+        if code == SS_ERR_OK_MARKER {
+            // Every neighbour masked to atom 0: pairs (0, 0) coincide.
+            assert_eq!(got, SS_ERR_COINCIDENT_CENTRES, "{name}");
+            assert_eq!(report.atoms, [0, 0], "{name}");
+        } else {
+            assert_eq!(got, code, "{name}");
+            assert_eq!(report.atoms, atoms, "{name}");
+        }
+        assert_eq!(host, before, "{name}: nothing may change");
+    }
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
+/// A marker for the case whose code depends on the data (see its comment).
+const SS_ERR_OK_MARKER: i32 = -1;
+
+#[test]
+fn bad_atoms_and_indices_name_the_atoms() {
+    let table = table(SS_MODEL_HERTZ_AA);
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    // A neighbour past the atoms.
+    let mut host = Host::new(9, 4);
+    host.neighbours[7][1] = 60;
+    let before = host.clone();
+    let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!((code, report.atoms), (SS_ERR_INDEX, [7, 60]));
+    assert_eq!(host, before);
+    // An atom of the list past the atoms, and a negative count.
+    let mut host = Host::new(9, 4);
+    host.list[3] = -2;
+    let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!((code, report.atoms), (SS_ERR_INDEX, [-2, -1]));
+    let mut host = Host::new(9, 4);
+    host.counts[4] = -1;
+    let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!((code, report.atoms), (SS_ERR_LENGTH, [4, -1]));
+    // A NaN velocity and a mass that is not positive: the atom named, nothing changed.
+    let mut host = Host::new(9, 4);
+    host.velocity[3 * 12 + 1] = f64::NAN;
+    let before = host.clone();
+    let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!((code, report.atoms), (SS_ERR_NON_FINITE_INPUT, [12, -1]));
+    assert_eq!(bits(&host.force), bits(&before.force));
+    let mut host = Host::new(9, 4);
+    host.mass[50] = 0.0;
+    let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!((code, report.atoms), (SS_ERR_NON_POSITIVE_MASS, [50, -1]));
+    // A pair lighter than the step was checked for: past the stable step, both atoms named.
+    let light = table_for_heavy_atoms();
+    let mut host = Host::new(9, 4);
+    let before = host.clone();
+    let (code, report) = host.evaluate(light, 1, 1, |_, _, _| {});
+    assert_eq!(code, SS_ERR_PAST_STABLE_STEP);
+    assert!(report.atoms[0] >= 0 && report.atoms[1] >= 0);
+    assert_eq!(host, before);
+    // SAFETY: from ss_table_new_f64.
+    unsafe {
+        ss_table_free_f64(light);
+        ss_table_free_f64(table);
+    }
+}
+
+/// A stiff linear table whose step is checked for atoms a thousand times heavier than the
+/// host's.
+fn table_for_heavy_atoms() -> *mut ss_table<f64> {
+    let table = table(SS_MODEL_AA);
+    let mut report = ss_table_report::<f64>::default();
+    // SAFETY: valid pointers.
+    unsafe {
+        for (a, b) in [(0, 0), (1, 1), (2, 2), (0, 2)] {
+            let stiff = ss_coefficients {
+                normal_stiffness: 1.0e11,
+                ..material(a)
+            };
+            assert_eq!(ss_table_set_f64(table, a, b, &stiff, null_mut()), SS_OK);
+        }
+        let heavy = [1e-2; 3];
+        assert_eq!(
+            ss_table_prepare_f64(table, DT, heavy.as_ptr(), &mut report),
+            SS_OK
+        );
+    }
+    table
+}
+
+#[test]
+fn the_step_is_checked_against_the_stiffest_pair_present() {
+    let table = table(SS_MODEL_AA);
+    // Material 1 made 100 times stiffer than material 0 (its mixed pairs 10 times): with equal
+    // masses, its pair with itself binds. Undamped, the limit is 2 / omega = 2 sqrt(m* / k)
+    // (m* = m / 2); damping only lowers it.
+    let stiff = ss_coefficients {
+        normal_stiffness: 1.0e6,
+        ..material(1)
+    };
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_f64(table, 1, 1, &stiff, null_mut()) },
+        SS_OK
+    );
+    let m = 1.0e-9;
+    let undamped = 2.0 * (m / 2.0 / 1.0e6_f64).sqrt();
+    let mut report = ss_table_report::<f64>::default();
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, 1.5 * undamped, [m; 3].as_ptr(), &mut report) };
+    assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
+    assert_eq!(report.materials, [1, 1]);
+    assert_eq!(report.parameter, SS_PARAMETER_TIME_STEP);
+    assert!(report.limit < undamped && report.limit > 0.5 * undamped);
+    // Just past that limit: refused with material 1's atoms present, passed without them
+    // (every other pair is softer).
+    let just_past = 1.01 * report.limit;
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, just_past, [m; 3].as_ptr(), null_mut()) };
+    assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, just_past, [m, 0.0, m].as_ptr(), null_mut()) };
+    assert_eq!(code, SS_OK);
+    // A table refused is not evaluated.
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, 1.5 * undamped, [m; 3].as_ptr(), null_mut()) };
+    assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
+    let mut host = Host::new(1, 3);
+    let before = host.clone();
+    assert_eq!(
+        host.evaluate(table, 1, 1, |_, _, _| {}).0,
+        SS_ERR_NOT_PREPARED
+    );
+    assert_eq!(host, before);
+    // A mass that is not a number is refused, not taken for an absent material.
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, DT, [m, f64::NAN, m].as_ptr(), null_mut()) };
+    assert_eq!(code, SS_ERR_NON_FINITE_INPUT);
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
+#[test]
+fn tables_refuse_bad_coefficients_and_missing_materials() {
+    let config = ss_table_config {
+        model: SS_MODEL_HERTZ_AA,
+        materials: 2,
+        largest_impact_speed: SPEED,
+        largest_effective_radius: RADIUS,
+    };
+    let mut table = null_mut();
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        let mut parameter = 0;
+        let bad = ss_coefficients {
+            poisson_ratio: 0.7,
+            ..material(0)
+        };
+        assert_eq!(
+            ss_table_set_f64(table, 0, 0, &bad, &mut parameter),
+            SS_ERR_POISSON_RATIO
+        );
+        assert_eq!(parameter, SS_PARAMETER_POISSON_RATIO);
+        let bad = ss_coefficients {
+            restitution: 1.5,
+            ..material(0)
+        };
+        assert_eq!(
+            ss_table_set_f64(table, 0, 0, &bad, &mut parameter),
+            SS_ERR_RESTITUTION
+        );
+        assert_eq!(parameter, SS_PARAMETER_RESTITUTION);
+        assert_eq!(
+            ss_table_set_f64(table, 0, 2, &material(0), &mut parameter),
+            SS_ERR_MATERIAL
+        );
+        // Material 1 has no coefficients and no pair of its own: the pair (0, 1) has no law.
+        assert_eq!(
+            ss_table_set_f64(table, 0, 0, &material(0), null_mut()),
+            SS_OK
+        );
+        let mut report = ss_table_report::<f64>::default();
+        let code = ss_table_prepare_f64(table, DT, [1e-5; 2].as_ptr(), &mut report);
+        assert_eq!((code, report.materials), (SS_ERR_MATERIAL, [0, 1]));
+        ss_table_free_f64(table);
+        // Unknown models, no materials, too many, a bad declared impact.
+        for (model, materials, speed, code) in [
+            (99, 1, SPEED, SS_ERR_UNKNOWN_MODEL),
+            (SS_MODEL_AA, 0, SPEED, SS_ERR_MATERIAL),
+            (SS_MODEL_AA, SS_MATERIALS_MAX + 1, SPEED, SS_ERR_MATERIAL),
+            (SS_MODEL_HERTZ_AA, 1, -1.0, SS_ERR_NOT_POSITIVE),
+        ] {
+            let config = ss_table_config {
+                model,
+                materials,
+                largest_impact_speed: speed,
+                largest_effective_radius: RADIUS,
+            };
+            let mut table = null_mut();
+            assert_eq!(ss_table_new_f64(&config, &mut table), code);
+            assert!(table.is_null());
+        }
+    }
+}
+
+/// The state seen from the other body gives the opposite force: action and reaction, and the
+/// torques swapped, for a contact with a stored spring.
+#[test]
+fn a_mirrored_state_with_the_bodies_swapped_gives_the_reaction() {
+    for model in [SS_MODEL_AA, SS_MODEL_HERTZ_AA_LUDING] {
+        let table = table(model);
+        assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+        let mut host = Host::new(21, values_of(model));
+        // A few steps so the springs are the kernel's own.
+        for _ in 0..5 {
+            assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
+        }
+        let (i, jj) = (0..45)
+            .flat_map(|i| (0..host.neighbours[i].len()).map(move |jj| (i, jj)))
+            .find(|&(i, jj)| {
+                host.history[i][jj * host.values..][..3]
+                    .iter()
+                    .any(|x| *x != 0.0)
+            })
+            .expect("a stored spring");
+        let j = host.neighbours[i][jj] as usize;
+        let (a, b) = (host.types[i] as usize - 1, host.types[j] as usize - 1);
+        let state = host.history[i][jj * host.values..(jj + 1) * host.values].to_vec();
+        let mut mirrored = vec![0.0; state.len()];
+        let (mut forward, mut backward) = (ss_forces::default(), ss_forces::default());
+        // SAFETY: valid pointers throughout.
+        unsafe {
+            assert_eq!(
+                ss_table_mirror_state_f64(table, state.as_ptr(), mirrored.as_mut_ptr()),
+                SS_OK
+            );
+            let (si, sj) = (host.sphere(i), host.sphere(j));
+            assert_eq!(
+                ss_table_pair_f64(table, a, b, &si, &sj, state.as_ptr(), &mut forward),
+                SS_OK
+            );
+            assert_eq!(
+                ss_table_pair_f64(table, b, a, &sj, &si, mirrored.as_ptr(), &mut backward),
+                SS_OK
+            );
+        }
+        assert_eq!(forward.touching, 1);
+        let scale = forward.normal_force.abs();
+        let close = |x: f64, y: f64| (x - y).abs() <= 1e-12 * scale;
+        let (f, g) = (forward.force_on_j, backward.force_on_j);
+        assert!(
+            close(f.x, -g.x) && close(f.y, -g.y) && close(f.z, -g.z),
+            "{f:?} {g:?}"
+        );
+        let (t, u) = (forward.torque_on_i, backward.torque_on_j);
+        assert!(close(t.x, u.x) && close(t.y, u.y) && close(t.z, u.z));
+        if model == SS_MODEL_HERTZ_AA_LUDING {
+            assert_eq!(mirrored[3], state[3], "the contact radius is kept");
+        }
+        // SAFETY: from ss_table_new_f64.
+        unsafe { ss_table_free_f64(table) };
+    }
+}
