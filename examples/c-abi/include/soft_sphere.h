@@ -797,6 +797,11 @@ typedef struct {
    * 1: every atom receives; 0: only the owned atoms.
    */
   int32_t newton;
+  /**
+   * Null, or three numbers per neighbour in list order: each pair's force on its atom `i`
+   * (N; zero for a pair apart), for a host's per-pair sums such as the virial.
+   */
+  double *pair_force;
 } ss_loads_f64;
 
 /**
@@ -1297,6 +1302,11 @@ typedef struct {
    * 1: every atom receives; 0: only the owned atoms.
    */
   int32_t newton;
+  /**
+   * Null, or three numbers per neighbour in list order: each pair's force on its atom `i`
+   * (N; zero for a pair apart), for a host's per-pair sums such as the virial.
+   */
+  float *pair_force;
 } ss_loads_f32;
 
 #ifdef __cplusplus

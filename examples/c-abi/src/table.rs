@@ -9,9 +9,9 @@
 
 use soft_sphere::{
     Backup, CheckedSphere, ContactList, ElasticMaterial, Float, Frictionless, HertzImpact,
-    HertzMixing, Law, LinearMaterial, LinearMixing, ListError, ListOutput, ListStats, Material,
-    MaterialTable, MindlinAA, MindlinAALuding, MindlinStateless, Mixing, ModelAA, ModelAALuding,
-    ParameterError, Sphere, SphereArrays, Stateless, TimeStep, Vec3,
+    HertzMixing, Interaction, Law, LinearMaterial, LinearMixing, ListError, ListOutput, ListStats,
+    Material, MaterialTable, MindlinAA, MindlinAALuding, MindlinStateless, Mixing, ModelAA,
+    ModelAALuding, ParameterError, Sphere, SphereArrays, Stateless, TimeStep, Vec3,
 };
 
 use crate::{
@@ -155,6 +155,9 @@ pub struct ss_loads<F> {
     pub torque: *mut F,
     /// 1: every atom receives; 0: only the owned atoms.
     pub newton: i32,
+    /// Null, or three numbers per neighbour in list order: each pair's force on its atom `i`
+    /// (N; zero for a pair apart), for a host's per-pair sums such as the virial.
+    pub pair_force: *mut F,
 }
 
 /// What an evaluation found, and which atoms an error is about.
@@ -201,6 +204,7 @@ struct Workspace<F, S> {
     loads: Vec<Vec3<F>>,
     force: Vec<Vec3<F>>,
     torque: Vec<Vec3<F>>,
+    records: Vec<Interaction<F>>,
 }
 
 type Linear<F, T> = LinearMixing<F, T>;
@@ -299,6 +303,7 @@ where
                 loads: Vec::new(),
                 force: Vec::new(),
                 torque: Vec::new(),
+                records: Vec::new(),
             },
         })
     }
@@ -559,6 +564,11 @@ where
         work.force.resize(n, Vec3::ZERO);
         work.torque.clear();
         work.torque.resize(n, Vec3::ZERO);
+        let per_pair = !loads.pair_force.is_null();
+        work.records.clear();
+        if per_pair {
+            work.records.resize(contacts, Interaction::Apart);
+        }
         let spheres = SphereArrays {
             position: vectors(atoms.position),
             velocity: vectors(atoms.velocity),
@@ -584,7 +594,7 @@ where
                     states: &mut work.saved,
                     loads: &mut work.loads,
                 },
-                records: None,
+                records: per_pair.then_some(&mut work.records[..]),
             },
         );
         let stats: ListStats<F> = match outcome {
@@ -611,6 +621,17 @@ where
                 }
                 k += 1;
             });
+        }
+        if per_pair {
+            // SAFETY: three numbers per neighbour (the caller's promise).
+            let out = unsafe { std::slice::from_raw_parts_mut(loads.pair_force, 3 * contacts) };
+            for (place, record) in out.chunks_exact_mut(3).zip(&work.records) {
+                let on_i = match record {
+                    Interaction::Touching(c) => c.force_on_i(),
+                    Interaction::Apart => Vec3::ZERO,
+                };
+                place.copy_from_slice(&[on_i.x, on_i.y, on_i.z]);
+            }
         }
         let receivers = if loads.newton == 1 { n } else { atoms.owned };
         for (out, sums) in [(loads.force, &work.force), (loads.torque, &work.torque)] {

@@ -165,6 +165,8 @@ struct Host {
     touch: Vec<Vec<i32>>,
     force: Vec<f64>,
     torque: Vec<f64>,
+    /// Each pair's force on its i, when asked for.
+    pair_force: Option<Vec<f64>>,
 }
 
 /// Pointers into a host's arrays, built just before a call.
@@ -196,6 +198,7 @@ impl Host {
             touch: vec![Vec::new(); n],
             force: (0..3 * n).map(|_| random.unit() - 0.5).collect(),
             torque: (0..3 * n).map(|_| 1e-3 * (random.unit() - 0.5)).collect(),
+            pair_force: None,
         };
         for k in 0..n {
             let cell = [k % 4, (k / 4) % 4, k / 16].map(|c| c as f64 * 1.9e-3);
@@ -272,10 +275,14 @@ impl Host {
             first_touch: views.first_touch.as_ptr(),
         };
         edit(&mut atoms, &mut list, &mut history);
-        let loads = ss_loads::<f64> {
+        let loads = ss_loads {
             force: self.force.as_mut_ptr(),
             torque: self.torque.as_mut_ptr(),
             newton,
+            pair_force: self
+                .pair_force
+                .as_mut()
+                .map_or(null_mut(), |p| p.as_mut_ptr()),
         };
         let mut report = ss_list_report::default();
         // SAFETY: every pointer into this host's arrays, as long as they say.
@@ -307,6 +314,7 @@ impl Host {
         let n = self.radius.len();
         let (mut force, mut torque) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
         let mut touching = 0;
+        let mut pair_force = Vec::new();
         for &i in &self.list.clone() {
             let i = i as usize;
             for (jj, &j) in self.neighbours[i].clone().iter().enumerate() {
@@ -364,6 +372,8 @@ impl Host {
                     _ => {}
                 }
                 self.touch[i][jj] = out.touching;
+                let f = out.force_on_j;
+                pair_force.extend([-f.x, -f.y, -f.z]);
                 touching += out.touching as usize;
                 if out.touching == 1 {
                     let on_j = [out.force_on_j.x, out.force_on_j.y, out.force_on_j.z];
@@ -379,6 +389,9 @@ impl Host {
                     }
                 }
             }
+        }
+        if self.pair_force.is_some() {
+            self.pair_force = Some(pair_force);
         }
         let receivers = if newton == 1 { n } else { self.owned };
         for k in 0..3 * receivers {
@@ -421,6 +434,11 @@ fn a_list_gives_the_bits_of_one_pair_at_a_time_for_every_law_and_newton_rule() {
         assert_eq!(values, values_of(model), "model {model}");
         for newton in [0, 1] {
             let mut host = Host::new(11 + model as u64, values.max(1));
+            // Per-pair forces asked for with newton on (as LAMMPS does on virial steps).
+            let pairs: usize = host.neighbours.iter().map(Vec::len).sum();
+            if newton == 1 {
+                host.pair_force = Some(vec![f64::NAN; 3 * pairs]);
+            }
             let mut expected = host.clone();
             let mut touching = 0;
             // Three steps, so that stored springs carry from one to the next.
@@ -434,6 +452,9 @@ fn a_list_gives_the_bits_of_one_pair_at_a_time_for_every_law_and_newton_rule() {
             assert_eq!(bits(&host.force), bits(&expected.force), "model {model}");
             assert_eq!(bits(&host.torque), bits(&expected.torque), "model {model}");
             assert_eq!(host.touch, expected.touch, "model {model}");
+            if let (Some(got), Some(wanted)) = (&host.pair_force, &expected.pair_force) {
+                assert_eq!(bits(got), bits(wanted), "model {model}");
+            }
             for (a, b) in host.history.iter().zip(&expected.history) {
                 assert_eq!(bits(a), bits(b), "model {model}");
             }

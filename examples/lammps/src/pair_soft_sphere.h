@@ -1,7 +1,18 @@
-/* pair_style soft/sphere LAW k_n e k_t eta_ratio mu: the soft-sphere kernel's contact laws as a
- * LAMMPS granular pair style. The stored spring of aa and aa/luding lives in LAMMPS's own
- * per-pair history (fix neigh/history, through gran/hooke/history's machinery), so it follows
- * atoms across ranks and neighbour-list rebuilds; every contact is evaluated by the kernel.
+/* pair_style soft/sphere [LAW five-numbers] [impact V]: the soft-sphere kernel's contact laws as
+ * a LAMMPS granular pair style, a law per pair of atom types.
+ *
+ *   pair_coeff I J LAW k_n e k_t eta_ratio mu     linear laws: aa, aa/luding, stateless,
+ *                                                 frictionless
+ *   pair_coeff I J LAW E nu e eta_ratio mu        Hertz-Mindlin laws: hertz/aa, hertz/aa/luding,
+ *                                                 hertz/stateless, hertz/frictionless
+ *   pair_coeff * *                                the law given to pair_style
+ *
+ * I I gives type I's own coefficients; a pair of types not given its own gets the kernel's
+ * mixing rule (geometric means; Hertz's E* and Mindlin's G* from both types' E and nu). One law
+ * per pair style. The Hertz laws check the time step against the declared fastest impact
+ * (impact V, m/s). The whole neighbour list goes to the kernel in one call per compute(); the
+ * stored springs live in LAMMPS's per-pair history (fix neigh/history), so they follow atoms
+ * across ranks, neighbour-list rebuilds and restart files.
  *
  * Part of the soft-sphere LAMMPS plugin. License: GPL-2.0-or-later (it links LAMMPS). */
 
@@ -11,6 +22,8 @@
 #include "pair_gran_hooke_history.h"
 #include "soft_sphere.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairSoftSphere : public PairGranHookeHistory {
@@ -19,13 +32,30 @@ class PairSoftSphere : public PairGranHookeHistory {
   ~PairSoftSphere() override;
   void compute(int, int) override;
   void settings(int, char **) override;
+  void coeff(int, char **) override;
   void init_style() override;
+  void reset_dt() override;
   double single(int, int, int, int, double, double, double, double &) override;
+  void transfer_history(double *, double *) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
 
  private:
-  ss_params_f64 params;
-  ss_law_f64 *law;
-  ss_bound_law_f64 *bound;    // the law bound to the run's step, for this rank's loop
+  int model;                           // the kernel's SS_MODEL_*, -1 before any law is given
+  int style_law;                       // pair_style gave a law for pair_coeff * *
+  ss_coefficients_f64 style_coefficients;
+  double impact_speed;                 // Hertz laws: the declared fastest impact (m/s)
+  std::vector<ss_coefficients_f64> coefficients;    // (ntypes + 1)^2, by type pair
+  std::vector<int> given;                           // whether a type pair was given its own
+  int history_made;                    // the history size the history fix was made with
+  ss_table_f64 *table;
+  std::vector<double> pair_force;      // per neighbour, for the virial
+
+  void size_tables();
+  ss_table_f64 *new_table(int materials, double largest_effective_radius);
+  void prepare();
 };
 
 }    // namespace LAMMPS_NS

@@ -12,32 +12,93 @@
 
 using namespace LAMMPS_NS;
 
-ss_params_f64 SoftSphere::parse(LAMMPS *lmp, const std::string &style, char **arg)
+namespace {
+struct Named {
+  const char *name;
+  int model;
+};
+const Named LAWS[] = {
+    {"aa", SS_MODEL_AA},
+    {"aa/luding", SS_MODEL_AA_LUDING},
+    {"stateless", SS_MODEL_STATELESS},
+    {"frictionless", SS_MODEL_FRICTIONLESS},
+    {"hertz/aa", SS_MODEL_HERTZ_AA},
+    {"hertz/aa/luding", SS_MODEL_HERTZ_AA_LUDING},
+    {"hertz/stateless", SS_MODEL_HERTZ_STATELESS},
+    {"hertz/frictionless", SS_MODEL_HERTZ_FRICTIONLESS},
+};
+}    // namespace
+
+int SoftSphere::model(LAMMPS *lmp, const std::string &style, const std::string &law)
+{
+  for (const Named &named : LAWS)
+    if (law == named.name) return named.model;
+  lmp->error->all(FLERR,
+                  "{}: unknown law '{}' (one of aa, aa/luding, stateless, frictionless, "
+                  "hertz/aa, hertz/aa/luding, hertz/stateless, hertz/frictionless)",
+                  style, law);
+  return -1;
+}
+
+bool SoftSphere::hertz(int model)
+{
+  return model == SS_MODEL_HERTZ_AA || model == SS_MODEL_HERTZ_AA_LUDING ||
+      model == SS_MODEL_HERTZ_STATELESS || model == SS_MODEL_HERTZ_FRICTIONLESS;
+}
+
+const char *SoftSphere::law_name(int model)
+{
+  for (const Named &named : LAWS)
+    if (named.model == model) return named.name;
+  return "?";
+}
+
+ss_coefficients_f64 SoftSphere::coefficients(LAMMPS *lmp, int model, char **arg)
+{
+  ss_coefficients_f64 c;
+  std::memset(&c, 0, sizeof(c));
+  double v[5];
+  for (int k = 0; k < 5; k++) v[k] = utils::numeric(FLERR, arg[k], false, lmp);
+  if (hertz(model)) {
+    c.youngs_modulus = v[0];
+    c.poisson_ratio = v[1];
+  } else {
+    c.normal_stiffness = v[0];
+    c.tangential_stiffness = v[2];
+  }
+  c.restitution = hertz(model) ? v[2] : v[1];
+  c.dashpot_ratio = v[3];
+  c.friction = v[4];
+  return c;
+}
+
+ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f64 &c)
 {
   ss_params_f64 p;
   std::memset(&p, 0, sizeof(p));
-  const std::string law = arg[0];
-  if (law == "aa")
-    p.model = SS_MODEL_AA;
-  else if (law == "aa/luding")
-    p.model = SS_MODEL_AA_LUDING;
-  else if (law == "stateless")
-    p.model = SS_MODEL_STATELESS;
-  else if (law == "frictionless")
-    p.model = SS_MODEL_FRICTIONLESS;
-  else
-    lmp->error->all(FLERR,
-                    "{}: unknown law '{}' (one of aa, aa/luding, stateless, frictionless)",
-                    style, law);
-  p.normal_stiffness = utils::numeric(FLERR, arg[1], false, lmp);
-  p.restitution = utils::numeric(FLERR, arg[2], false, lmp);
-  p.tangential_stiffness = utils::numeric(FLERR, arg[3], false, lmp);
-  p.dashpot_ratio = utils::numeric(FLERR, arg[4], false, lmp);
-  p.friction = utils::numeric(FLERR, arg[5], false, lmp);
+  p.model = model;
+  p.normal_stiffness = c.normal_stiffness;
+  p.restitution = c.restitution;
+  p.tangential_stiffness = c.tangential_stiffness;
+  p.dashpot_ratio = c.dashpot_ratio;
+  p.friction = c.friction;
+  if (hertz(model)) {
+    ss_material_f64 m;
+    m.youngs_modulus = c.youngs_modulus;
+    m.poisson_ratio = c.poisson_ratio;
+    const int code =
+        ss_effective_moduli_f64(&m, &m, &p.effective_modulus, &p.effective_shear_modulus);
+    if (code != SS_OK)
+      lmp->error->all(FLERR, "{}: {} {}", law_name(model),
+                      parameter_name(code == SS_ERR_POISSON_RATIO ? SS_PARAMETER_POISSON_RATIO
+                                                                  : SS_PARAMETER_MODULUS,
+                                     model),
+                      parameter_error(code));
+  }
   return p;
 }
 
-static const char *parameter_name(int parameter)
+const char *SoftSphere::parameter_name(int parameter, int model)
 {
   switch (parameter) {
     case SS_PARAMETER_NORMAL_STIFFNESS:
@@ -54,12 +115,20 @@ static const char *parameter_name(int parameter)
       return "the time step";
     case SS_PARAMETER_MASS:
       return "the smallest atom mass";
+    case SS_PARAMETER_MODULUS:
+      return hertz(model) ? "E (Young's modulus)" : "the modulus";
+    case SS_PARAMETER_POISSON_RATIO:
+      return "nu (Poisson's ratio)";
+    case SS_PARAMETER_SPEED:
+      return "the impact speed (pair_style soft/sphere impact V)";
+    case SS_PARAMETER_RADIUS:
+      return "the largest radius";
     default:
       return "the law";
   }
 }
 
-static const char *parameter_error(int code)
+const char *SoftSphere::parameter_error(int code)
 {
   switch (code) {
     case SS_ERR_NON_FINITE_PARAMETER:
@@ -70,6 +139,8 @@ static const char *parameter_error(int code)
       return "must not be negative";
     case SS_ERR_RESTITUTION:
       return "must lie in [0, 1]";
+    case SS_ERR_POISSON_RATIO:
+      return "must lie in (-1, 0.5]";
     case SS_ERR_UNSTABLE_TIME_STEP:
       return "is at or past the stability limit";
     default:
@@ -94,7 +165,8 @@ ss_law_f64 *SoftSphere::build(LAMMPS *lmp, const std::string &style, ss_params_f
                     "for the smallest pair (effective mass {} kg)",
                     style, dt, limit, smallest_effective_mass);
   }
-  lmp->error->all(FLERR, "{}: {} {}", style, parameter_name(parameter), parameter_error(code));
+  lmp->error->all(FLERR, "{}: {} {}", style, parameter_name(parameter, params.model),
+                  parameter_error(code));
   return nullptr;
 }
 
@@ -117,6 +189,17 @@ double SoftSphere::smallest_mass(LAMMPS *lmp)
   return all;
 }
 
+double SoftSphere::largest_radius(LAMMPS *lmp)
+{
+  double largest = 0.0;
+  const double *radius = lmp->atom->radius;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (radius[i] > largest) largest = radius[i];
+  double all = largest;
+  MPI_Allreduce(&largest, &all, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
+  return all;
+}
+
 const char *SoftSphere::contact_error(int code)
 {
   switch (code) {
@@ -132,7 +215,17 @@ const char *SoftSphere::contact_error(int code)
       return "the contact force overflowed";
     case SS_ERR_PAST_STABLE_STEP:
       return "the contact is stiffer than the time step was checked for (unstable: shorten "
-             "the timestep)";
+             "the timestep, or for a Hertz law declare a faster impact)";
+    case SS_ERR_LENGTH:
+      return "a neighbour count or the history size is wrong";
+    case SS_ERR_INDEX:
+      return "a neighbour index is past the atoms";
+    case SS_ERR_MATERIAL:
+      return "an atom type is past the pair style's types";
+    case SS_ERR_NULL:
+      return "an array is missing";
+    case SS_ERR_NOT_PREPARED:
+      return "the pair style was not initialised";
     default:
       return "the contact was rejected";
   }

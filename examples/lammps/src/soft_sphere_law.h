@@ -1,6 +1,6 @@
-/* The soft-sphere contact law as LAMMPS styles see it: parsing of
- * "LAW k_n e k_t eta_ratio mu" and the checked construction of the kernel's law
- * through its C ABI, with a clear ERROR naming the parameter the kernel rejects.
+/* The soft-sphere contact laws as LAMMPS styles see them: a law's name and its five numbers
+ * ("aa k_n e k_t eta_ratio mu", "hertz/aa E nu e eta_ratio mu"), the kernel's laws built and
+ * checked through its C ABI, and clear ERRORs naming what the kernel rejects.
  *
  * Part of the soft-sphere LAMMPS plugin. License: GPL-2.0-or-later (it links LAMMPS);
  * the kernel it calls is MIT OR Apache-2.0. */
@@ -17,24 +17,45 @@ class LAMMPS;
 
 namespace SoftSphere {
 
-  /* The law's parameters from five numbers after the law's name (arg[0] .. arg[5]);
-   * the time step and mass are filled in by build(). ERROR on an unknown law. */
-  ss_params_f64 parse(LAMMPS *lmp, const std::string &style, char **arg);
+  /* The kernel's model code of a law's name; ERROR on an unknown one. */
+  int model(LAMMPS *lmp, const std::string &style, const std::string &law);
+
+  /* Whether a model is one of the Hertz-Mindlin laws (material form: E nu e eta_ratio mu). */
+  bool hertz(int model);
+
+  /* A law's name, as the input script writes it. */
+  const char *law_name(int model);
+
+  /* The five numbers after a law's name (arg[0] .. arg[4]) as kernel coefficients. */
+  ss_coefficients_f64 coefficients(LAMMPS *lmp, int model, char **arg);
+
+  /* The one-law parameters of `model` with coefficients `c` for a contact between two bodies
+   * of that material (Hertz: E* and G* of the material with itself); the time step, masses and
+   * declared impact are filled in by build(). */
+  ss_params_f64 params(LAMMPS *lmp, int model, const ss_coefficients_f64 &c);
 
   /* The kernel's law for `params` at time step `dt`, checked for contacts of effective mass
    * down to `smallest_effective_mass`. ERROR (on all ranks) naming the rejected parameter. */
   ss_law_f64 *build(LAMMPS *lmp, const std::string &style, ss_params_f64 params, double dt,
                     double smallest_effective_mass);
 
-  /* `law` bound to its time step for this rank's loop over its contacts (the kernel reuses
-   * each pair's derived oscillator and the wall's check between calls). Free it with
+  /* `law` bound to its time step for this rank's loop over its contacts. Free it with
    * ss_bound_law_free_f64 before the law. */
   ss_bound_law_f64 *bind(LAMMPS *lmp, const std::string &style, const ss_law_f64 *law);
 
   /* The smallest per-atom mass over all ranks (atom style sphere). */
   double smallest_mass(LAMMPS *lmp);
 
-  /* What a contact error code means. */
+  /* The largest radius over all ranks. */
+  double largest_radius(LAMMPS *lmp);
+
+  /* What a parameter code names, for a law of `model`. */
+  const char *parameter_name(int parameter, int model);
+
+  /* What a parameter error code means. */
+  const char *parameter_error(int code);
+
+  /* What a contact or list error code means. */
   const char *contact_error(int code);
 
 }    // namespace SoftSphere
