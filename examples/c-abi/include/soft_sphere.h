@@ -762,7 +762,9 @@ typedef struct {
 /**
  * The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
  * `values` numbers from `first_value[i] + jj * values` and a touch flag at
- * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+ * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`). The flag
+ * is 1 where the neighbour keeps a state (not all zero): the kernel relaxes the state of a pair
+ * apart to zero, so a host may drop every other neighbour's values when it rebuilds its list.
  */
 typedef struct {
   /**
@@ -1267,7 +1269,9 @@ typedef struct {
 /**
  * The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
  * `values` numbers from `first_value[i] + jj * values` and a touch flag at
- * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+ * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`). The flag
+ * is 1 where the neighbour keeps a state (not all zero): the kernel relaxes the state of a pair
+ * apart to zero, so a host may drop every other neighbour's values when it rebuilds its list.
  */
 typedef struct {
   /**
@@ -1549,7 +1553,8 @@ int32_t ss_table_prepare_f64(ss_table_f64 *table,
  * materials, its state read from the history (zero where `history` is null), each
  * contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
  * and torques are added into `*loads` (each atom's in list order), each neighbour's
- * touch flag is set, and, when `advance` is not 0, its history values are advanced
+ * touch flag is set (1 where it keeps a state), and, when `advance` is not 0, its
+ * history values are advanced
  * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
  * error nothing is written but `*report`, which names the atoms (indices) it is
  * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
@@ -1816,7 +1821,8 @@ int32_t ss_table_prepare_f32(ss_table_f32 *table,
  * materials, its state read from the history (zero where `history` is null), each
  * contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
  * and torques are added into `*loads` (each atom's in list order), each neighbour's
- * touch flag is set, and, when `advance` is not 0, its history values are advanced
+ * touch flag is set (1 where it keeps a state), and, when `advance` is not 0, its
+ * history values are advanced
  * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
  * error nothing is written but `*report`, which names the atoms (indices) it is
  * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,

@@ -1797,7 +1797,8 @@ macro_rules! entry_points {
         /// materials, its state read from the history (zero where `history` is null), each
         /// contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
         /// and torques are added into `*loads` (each atom's in list order), each neighbour's
-        /// touch flag is set, and, when `advance` is not 0, its history values are advanced
+        /// touch flag is set (1 where it keeps a state), and, when `advance` is not 0, its
+        /// history values are advanced
         /// (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
         /// error nothing is written but `*report`, which names the atoms (indices) it is
         /// about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,

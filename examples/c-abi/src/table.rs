@@ -131,7 +131,9 @@ pub struct ss_neighbours {
 
 /// The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
 /// `values` numbers from `first_value[i] + jj * values` and a touch flag at
-/// `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`).
+/// `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`). The flag
+/// is 1 where the neighbour keeps a state (not all zero): the kernel relaxes the state of a pair
+/// apart to zero, so a host may drop every other neighbour's values when it rebuilds its list.
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct ss_history<F> {
@@ -407,7 +409,8 @@ fn present<T>(pointer: *const T, count: usize) -> bool {
     count == 0 || !pointer.is_null()
 }
 
-/// Checks every pointer, count and index of the list, in list order.
+/// Checks every pointer and count of the list, and each of its atoms, in list order (the
+/// neighbours are checked as they are gathered).
 ///
 /// # Safety
 /// As `ss_table_evaluate_*`.
@@ -473,14 +476,6 @@ unsafe fn check_list<F>(
                 return SS_ERR_NULL;
             }
         }
-        for jj in 0..count {
-            // SAFETY: atom i's neighbours hold `count` entries.
-            let j = unsafe { *first.add(jj) } & list.index_mask;
-            if j < 0 || j as usize >= n {
-                report.atoms = [i as i64, i64::from(j)];
-                return SS_ERR_INDEX;
-            }
-        }
     }
     report.atoms = [-1, -1];
     SS_OK
@@ -543,20 +538,52 @@ where
             }
             work.material.push(t as u32);
         }
-        // Gather the pairs and their states in list order.
-        work.pairs.clear();
-        work.states.clear();
-        for_each_neighbour(list, |i, jj, j| {
-            work.pairs.push([i as u32, j as u32]);
-            work.states.push(match history {
-                // SAFETY: checked present; `values` numbers per neighbour.
-                Some(h) => unsafe {
-                    let at = (*h.first_value.add(i)).add(jj * h.values);
-                    Stored::read(std::slice::from_raw_parts(at, values))
-                },
-                None => Default::default(),
-            });
-        });
+        // Gather the pairs and their states, checking each neighbour, in list order: one pass
+        // over the list.
+        let mut total = 0;
+        for ii in 0..list.count {
+            // SAFETY: checked by `check_list`.
+            total += unsafe { *list.neighbour_counts.add(*list.atoms.add(ii) as usize) } as usize;
+        }
+        work.pairs.resize(total, [0; 2]);
+        work.states.resize(total, Default::default());
+        let mut k = 0;
+        for ii in 0..list.count {
+            // SAFETY: checked by `check_list`.
+            let (i, count, first) = unsafe {
+                let i = *list.atoms.add(ii) as usize;
+                (
+                    i,
+                    *list.neighbour_counts.add(i) as usize,
+                    *list.first_neighbour.add(i),
+                )
+            };
+            // SAFETY: atom i's neighbours hold `count` entries.
+            let neighbours = unsafe { std::slice::from_raw_parts(first, count) };
+            let run = k..k + count;
+            for (&j, pair) in neighbours.iter().zip(&mut work.pairs[run.clone()]) {
+                let j = j & list.index_mask;
+                if j < 0 || j as usize >= n {
+                    report.atoms = [i as i64, i64::from(j)];
+                    return SS_ERR_INDEX;
+                }
+                let j = j as usize;
+                *pair = [i as u32, j as u32];
+            }
+            if let (Some(h), true) = (history, values > 0) {
+                // SAFETY: checked present by `check_list`; `values` numbers per neighbour.
+                let at = unsafe { *h.first_value.add(i) };
+                for (jj, state) in work.states[run].iter_mut().enumerate() {
+                    // SAFETY: as above.
+                    *state = Stored::read(unsafe {
+                        std::slice::from_raw_parts(at.add(jj * h.values), values)
+                    });
+                }
+            } else {
+                work.states[run].fill(Default::default());
+            }
+            k += count;
+        }
         let contacts = work.pairs.len();
         work.saved.resize(contacts, Default::default());
         work.loads.resize(2 * n, Vec3::ZERO);
@@ -603,24 +630,34 @@ where
         };
         report.contacts = stats.pair_contacts;
         report.sliding = stats.sliding_contacts;
-        // Scatter: states (when advancing) and touch flags, in list order again.
+        // Scatter: touch flags and (when advancing) states, in list order again. A neighbour
+        // "touches" when it keeps a state: the kernel relaxes an apart pair's state to zero, and
+        // a host that drops the state of a neighbour that does not touch (as LAMMPS does when it
+        // rebuilds its lists) then loses nothing.
         if let Some(h) = history {
             let mut k = 0;
-            for_each_neighbour(list, |i, jj, j| {
-                let (a, b) = (spheres.position[i], spheres.position[j]);
-                let reach = spheres.radius[i] + spheres.radius[j];
-                // The kernel's own test of touching (the same arithmetic).
-                let touching = (b - a).norm_squared() < reach * reach;
-                // SAFETY: checked present; `values` numbers and one flag per neighbour.
+            for ii in 0..list.count {
+                // SAFETY: checked by `check_list`; `values` numbers and one flag per neighbour.
                 unsafe {
-                    *(*h.first_touch.add(i)).add(jj) = i32::from(touching);
-                    if advance && values > 0 {
-                        let at = (*h.first_value.add(i)).add(jj * h.values);
-                        work.states[k].write(std::slice::from_raw_parts_mut(at, values));
+                    let i = *list.atoms.add(ii) as usize;
+                    let count = *list.neighbour_counts.add(i) as usize;
+                    let touch = std::slice::from_raw_parts_mut(*h.first_touch.add(i), count);
+                    let kept = if advance { &work.states } else { &work.saved };
+                    for (flag, state) in touch.iter_mut().zip(&kept[k..k + count]) {
+                        *flag = i32::from(*state != Default::default());
                     }
+                    if advance && values > 0 {
+                        let at = *h.first_value.add(i);
+                        for (jj, state) in work.states[k..k + count].iter().enumerate() {
+                            state.write(std::slice::from_raw_parts_mut(
+                                at.add(jj * h.values),
+                                values,
+                            ));
+                        }
+                    }
+                    k += count;
                 }
-                k += 1;
-            });
+            }
         }
         if per_pair {
             // SAFETY: three numbers per neighbour (the caller's promise).
@@ -680,21 +717,6 @@ where
                 SS_OK
             }
             Err(e) => contact_code(e),
-        }
-    }
-}
-
-/// Calls `f(i, jj, j)` for every neighbour of the (checked) list, in list order.
-fn for_each_neighbour(list: &ss_neighbours, mut f: impl FnMut(usize, usize, usize)) {
-    for ii in 0..list.count {
-        // SAFETY: checked by `check_list`.
-        unsafe {
-            let i = *list.atoms.add(ii) as usize;
-            let count = *list.neighbour_counts.add(i) as usize;
-            let first = *list.first_neighbour.add(i);
-            for jj in 0..count {
-                f(i, jj, (*first.add(jj) & list.index_mask) as usize);
-            }
         }
     }
 }

@@ -371,7 +371,10 @@ impl Host {
                     ]),
                     _ => {}
                 }
-                self.touch[i][jj] = out.touching;
+                // A neighbour touches, for the host's history, when it keeps a state.
+                let stored = &self.history[i][jj * self.values..(jj + 1) * self.values];
+                let keeps = values_of(model) > 0 && stored.iter().any(|x| *x != 0.0);
+                self.touch[i][jj] = i32::from(keeps);
                 let f = out.force_on_j;
                 pair_force.extend([-f.x, -f.y, -f.z]);
                 touching += out.touching as usize;
@@ -470,17 +473,25 @@ fn a_list_gives_the_bits_of_one_pair_at_a_time_for_every_law_and_newton_rule() {
 }
 
 #[test]
-fn the_setup_evaluation_leaves_the_history_and_sets_the_touch_flags() {
+fn the_setup_evaluation_leaves_the_history_and_flags_the_neighbours_that_keep_a_state() {
     let table = table(SS_MODEL_AA);
     assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
     let mut host = Host::new(5, 3);
+    // One neighbour with no stored state: it does not touch, for the history.
+    host.history[0][..3].fill(0.0);
     let before = host.history.clone();
     let (code, report) = host.evaluate(table, 0, 0, |_, _, _| {});
     assert_eq!(code, SS_OK);
     assert_eq!(host.history, before);
-    let touching: i32 = host.touch.iter().flatten().sum();
-    assert_eq!(touching as usize, report.contacts);
-    assert!(touching > 40);
+    assert!(report.contacts > 40);
+    for (flags, values) in host.touch.iter().zip(&host.history) {
+        let kept: Vec<i32> = values
+            .chunks(3)
+            .map(|s| i32::from(s.iter().any(|x| *x != 0.0)))
+            .collect();
+        assert_eq!(flags, &kept);
+    }
+    assert_eq!(host.touch[0][0], 0);
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }

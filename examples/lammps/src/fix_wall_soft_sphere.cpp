@@ -17,15 +17,27 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), law(nullptr), bound(nullptr), history(nullptr), advance(true)
+    Fix(lmp, narg, arg), law(nullptr), bound(nullptr), impact_speed(0.0), history(nullptr),
+    advance(true)
 {
   const std::string style = "fix wall/soft/sphere";
-  if (narg != 12)
+  const int with_impact = narg == 14 && std::strcmp(arg[9], "impact") == 0;
+  if (narg != 12 && !with_impact)
     error->all(FLERR,
-               "Illegal fix wall/soft/sphere command: expected LAW k_n e k_t eta_ratio mu "
-               "xplane|yplane|zplane LO HI");
+               "Illegal fix wall/soft/sphere command: expected LAW and five numbers, "
+               "[impact V], xplane|yplane|zplane LO HI");
   if (!atom->sphere_flag) error->all(FLERR, "fix wall/soft/sphere requires atom style sphere");
-  params = SoftSphere::parse(lmp, style, &arg[3]);
+  const int model = SoftSphere::model(lmp, style, arg[3]);
+  params = SoftSphere::params(lmp, model, SoftSphere::coefficients(lmp, model, &arg[4]));
+  if (with_impact) impact_speed = utils::numeric(FLERR, arg[10], false, lmp);
+  if (SoftSphere::hertz(model) && !with_impact)
+    error->all(FLERR,
+               "{}: the Hertz laws check the time step against the fastest impact: give it as "
+               "impact V (m/s) after the law's numbers",
+               style);
+  params.largest_impact_speed = impact_speed;
+  params.largest_effective_radius = 1.0;
+  arg += 2 * with_impact;
   const std::string plane = arg[9];
   if (plane == "xplane")
     axis = 0;
@@ -50,14 +62,17 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
 
   force_reneighbor = 0;
   maxexchange = VALUES;
+  restart_peratom = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
 }
 
 FixWallSoftSphere::~FixWallSoftSphere()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(history);
   ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
@@ -70,7 +85,8 @@ int FixWallSoftSphere::setmask()
 
 void FixWallSoftSphere::init()
 {
-  // A sphere against a wall has its own mass as effective mass.
+  // A sphere against a wall has its own mass as effective mass, and its radius as R*.
+  params.largest_effective_radius = SoftSphere::largest_radius(lmp);
   ss_bound_law_free_f64(bound);
   ss_law_free_f64(law);
   bound = nullptr;
@@ -110,13 +126,14 @@ void FixWallSoftSphere::forces()
     (&wall.normal.x)[axis] = outward;
     for (int i = 0; i < atom->nlocal; i++) {
       if (!(mask[i] & groupbit)) continue;
-      double *spring = &history[i][3 * w];
+      double *stored = &history[i][STATE * w];
       // Apart (the kernel's own test: the distance from the plane is at least the radius):
       // the kernel would reset the stored spring the same way. A position that is not finite
       // goes on to the kernel, which refuses it.
       const double distance = outward * (x[i][axis] - position[w]);
       if (distance >= radius[i] && std::isfinite(distance)) {
-        if (advance) spring[0] = spring[1] = spring[2] = 0.0;
+        if (advance)
+          for (int m = 0; m < STATE; m++) stored[m] = 0.0;
         continue;
       }
       ss_sphere_f64 s;
@@ -126,16 +143,20 @@ void FixWallSoftSphere::forces()
       s.radius = radius[i];
       s.mass = atom->rmass[i];
       ss_state_f64 state;
-      state.displacement = {spring[0], spring[1], spring[2]};
+      state.displacement = {stored[0], stored[1], stored[2]};
+      state.spring_force = {stored[3], stored[4], stored[5]};
+      state.contact_radius = stored[6];
       ss_forces_f64 out;
       const int code = ss_bound_sphere_wall_f64(bound, &s, &wall, &state, &out);
       if (code != SS_OK)
         error->one(FLERR, "fix wall/soft/sphere: atom {} against the wall: {}", atom->tag[i],
                    SoftSphere::contact_error(code));
       if (advance) {
-        spring[0] = state.displacement.x;
-        spring[1] = state.displacement.y;
-        spring[2] = state.displacement.z;
+        const double kept[STATE] = {state.displacement.x, state.displacement.y,
+                                    state.displacement.z, state.spring_force.x,
+                                    state.spring_force.y, state.spring_force.z,
+                                    state.contact_radius};
+        for (int m = 0; m < STATE; m++) stored[m] = kept[m];
       }
       if (!out.touching) continue;
       // The C ABI reports what the sphere receives as the force and torque on j.
@@ -179,4 +200,32 @@ int FixWallSoftSphere::unpack_exchange(int nlocal, double *buf)
 {
   for (int m = 0; m < VALUES; m++) history[nlocal][m] = buf[m];
   return VALUES;
+}
+
+/* Restart files: each atom's stored states, behind their count (LAMMPS's per-atom layout). */
+int FixWallSoftSphere::pack_restart(int i, double *buf)
+{
+  buf[0] = VALUES + 1;
+  for (int m = 0; m < VALUES; m++) buf[m + 1] = history[i][m];
+  return VALUES + 1;
+}
+
+void FixWallSoftSphere::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  // Skip the values of the fixes stored before this one.
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int v = 0; v < VALUES; v++) history[nlocal][v] = extra[nlocal][m++];
+}
+
+int FixWallSoftSphere::size_restart(int)
+{
+  return VALUES + 1;
+}
+
+int FixWallSoftSphere::maxsize_restart()
+{
+  return VALUES + 1;
 }

@@ -30,7 +30,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.version = LAMMPS_VERSION;
   plugin.style = "pair";
   plugin.name = "soft/sphere";
-  plugin.info = "soft-sphere kernel contact laws (aa, aa/luding, stateless, frictionless)";
+  plugin.info = "soft-sphere kernel contact laws per type pair (linear and Hertz-Mindlin: aa, aa/luding, stateless, frictionless)";
   plugin.author = "the soft-sphere developers";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_creator;
   plugin.handle = handle;
