@@ -3,7 +3,9 @@
 # libraries) into a cache outside the clone, reused when present, then the soft-sphere plugin
 # against it and the Rust C ABI, in the clone's target directory. Prints, as its last two lines, lmp=PATH and plugin=PATH.
 #
-# Usage: examples/lammps/build.sh   (cache: $SOFT_SPHERE_CACHE, default ~/.cache/soft-sphere)
+# Usage: examples/lammps/build.sh [v3]   (cache: $SOFT_SPHERE_CACHE, default ~/.cache/soft-sphere)
+# With v3, the kernel is compiled for x86-64-v3 (AVX2, FMA) into its own target directory and
+# plugin build, beside the portable one.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -48,13 +50,23 @@ if [ ! -x "$lmp" ]; then
 fi
 
 # 3. The Rust static library (the C ABI) and 4. the plugin against both.
-(cd "$root" && cargo build --release -q -p soft-sphere-ffi) >&2
+variant="${1:-portable}"
+case "$variant" in
+  portable) target_dir="$root/target"; suffix="" ;;
+  v3) target_dir="$root/target/v3"; suffix="-v3" ;;
+  *) say "unknown build '$variant' (portable or v3)"; exit 1 ;;
+esac
+if [ "$variant" = v3 ]; then
+  (cd "$root" && RUSTFLAGS="-C target-cpu=x86-64-v3" cargo build --release -q -p soft-sphere-ffi --target-dir "$target_dir") >&2
+else
+  (cd "$root" && cargo build --release -q -p soft-sphere-ffi) >&2
+fi
 # The plugin belongs to this clone: its build sits in the clone's target directory, since a cmake
 # cache is tied to the source path it was made from.
-plugin_build="$root/target/lammps-plugin-build"
+plugin_build="$root/target/lammps-plugin-build$suffix"
 cmake -S "$here" -B "$plugin_build" -D CMAKE_BUILD_TYPE=Release \
   -D LAMMPS_SOURCE_DIR="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/../src")" \
-  -D LAMMPS_BINARY_DIR="$lammps_build" -D SOFT_SPHERE_LIB="$root/target/release/libsoft_sphere_ffi.a" \
+  -D LAMMPS_BINARY_DIR="$lammps_build" -D SOFT_SPHERE_LIB="$target_dir/release/libsoft_sphere_ffi.a" \
   -D SOFT_SPHERE_INCLUDE="$root/examples/c-abi/include" >&2
 cmake --build "$plugin_build" -j "$(nproc)" >&2
 

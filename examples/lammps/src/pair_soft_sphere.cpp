@@ -309,16 +309,25 @@ double PairSoftSphere::single(int i, int j, int itype, int jtype, double rsq, do
   const double radsum = atom->radius[i] + atom->radius[j];
   if (rsq >= radsum * radsum || table == nullptr) return 0.0;
 
-  const double *values = nullptr;
-  const int jnum = list->numneigh[i];
-  const int *jlist = list->firstneigh[i];
-  for (int jj = 0; jj < jnum; jj++) {
-    neighprev++;
-    if (neighprev >= jnum) neighprev = 0;
-    if ((jlist[neighprev] & NEIGHMASK) == j) {
-      values = &fix_history->firstvalue[i][size_history * neighprev];
-      break;
+  // The pair's stored state: under i in the pair style's list, or under j when j is owned (a
+  // list asked for by a compute may hold the pair the other way round), seen from i.
+  double mirrored[8];
+  const auto find = [this](int a, int b) -> const double * {
+    const int jnum = list->numneigh[a];
+    const int *jlist = list->firstneigh[a];
+    for (int jj = 0; jj < jnum; jj++) {
+      neighprev++;
+      if (neighprev >= jnum) neighprev = 0;
+      if ((jlist[neighprev] & NEIGHMASK) == b)
+        return &fix_history->firstvalue[a][size_history * neighprev];
     }
+    return nullptr;
+  };
+  const double *values = find(i, j);
+  if (values == nullptr && j < atom->nlocal) {
+    const double *other = find(j, i);
+    if (other != nullptr && ss_table_mirror_state_f64(table, other, mirrored) == SS_OK)
+      values = mirrored;
   }
   const auto sphere = [this](int k) {
     ss_sphere_f64 s;
