@@ -3,6 +3,7 @@
 #   1. Elghannay & Tafti's Kharaz impact and plate case with fix wall/soft/sphere aa against the
 #      Rust validation run;
 #   1b. Hertz-Mindlin (Chung & Ooi Test 5, two spheres) against LAMMPS's own pair granular;
+#   1c. the wall fix with a Hertz law: a head-on rebound at e;
 #   2. the same physics as LAMMPS's own gran/hooke/history on a granular gas of equal spheres;
 #   3. the reference scene on 1, 2 and 4 MPI ranks, and a stored spring carried between ranks;
 #   3b. a mixture of two materials against pair granular (hooke, hertz/material) with per-type
@@ -92,6 +93,35 @@ for k in 0 1 2 3 4 5; do
 done
 result "hertz-mindlin vs pair granular (Chung & Ooi test 5, psi 0.1-10)" "$hm_ok" \
   "V_s'/(mu V_n') within $hm_worst of LAMMPS (bound 0.02)"
+
+# 1c. The wall fix with a Hertz law: a sphere (1 mm, E 5 MPa, nu 0.3) meets the floor head-on at
+# 0.5 m/s with no gravity; the kernel's Tsuji dashpot is solved from e, so it leaves at e times
+# that (0.7; the kernel's validation holds it within 0.16 %).
+cat > "$work/wall_hertz.in" <<'WALL'
+units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+comm_modify vel yes
+region box block -0.005 0.005 -0.005 0.005 0 0.01
+create_box 1 box
+create_atoms 1 single 0 0 0.000501
+set type 1 diameter 1e-3 density 2500
+velocity all set 0 0 -0.5
+plugin load ${plugin}
+pair_style soft/sphere impact 1
+pair_coeff * * hertz/aa 5e6 0.3 0.7 0.5 0.5
+fix integrate all nve/sphere
+fix floor all wall/soft/sphere hertz/aa 5e6 0.3 0.7 0.5 0.5 impact 1 zplane 0.0 NULL
+timestep 1e-7
+run 5000
+variable w equal vz[1]
+print "RESULT $(v_w:%.10f)"
+WALL
+rebound="$(cd "$work" && "$lmp" -in wall_hertz.in -var plugin "$plugin" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2)"
+ratio="$(python3 -c "print(${rebound:-0} / 0.5)")"
+compare "$ratio" 0.7 1.6e-3
+result "hertz/aa floor (fix wall/soft/sphere), head-on at 0.5 m/s" $? "rebound ratio $ratio for e = 0.7 (bound 0.16 %)"
 
 # 2. The same physics as the native style: a granular gas of 1,000 equal spheres, periodic, no
 # walls (the native gamma_n is per unit mass, so it matches e only for equal masses).
