@@ -816,3 +816,163 @@ fn a_mirrored_state_with_the_bodies_swapped_gives_the_reaction() {
         unsafe { ss_table_free_f64(table) };
     }
 }
+
+/// The f32 entry: three spheres in a row, the middle one of the stiffer material, each contact
+/// the bits of `ss_sphere_sphere_f32` with the mixed law, forces summed in list order.
+#[test]
+fn the_f32_list_entry_gives_the_single_calls_bits() {
+    let coefficients = |k: f32| ss_coefficients::<f32> {
+        normal_stiffness: k,
+        restitution: 0.9,
+        tangential_stiffness: 0.3 * k,
+        dashpot_ratio: 0.5,
+        friction: 0.4,
+        ..Default::default()
+    };
+    let config = ss_table_config::<f32> {
+        model: SS_MODEL_AA,
+        materials: 2,
+        ..Default::default()
+    };
+    let position: [f32; 9] = [0.0, 0.0, 0.0, 1.9e-3, 0.1e-3, 0.0, 3.8e-3, 0.0, 0.05e-3];
+    let velocity: [f32; 9] = [0.1, 0.0, 0.02, -0.1, 0.05, 0.0, 0.0, -0.03, 0.01];
+    let spin: [f32; 9] = [0.0, 5.0, 0.0, 1.0, 0.0, -3.0, 0.0, 0.0, 2.0];
+    let (radius, mass, types) = ([1.0e-3_f32; 3], [1.0e-5_f32; 3], [0, 1, 0]);
+    let neighbours: [Vec<i32>; 3] = [vec![1], vec![2], vec![]];
+    let first: Vec<*const i32> = neighbours.iter().map(|v| v.as_ptr()).collect();
+    let mut values: Vec<Vec<f32>> = vec![vec![1e-6, -2e-6, 0.0], vec![0.0, 3e-6, 1e-6], vec![]];
+    let mut touch: Vec<Vec<i32>> = vec![vec![0], vec![0], vec![]];
+    let first_value: Vec<*mut f32> = values.iter_mut().map(|v| v.as_mut_ptr()).collect();
+    let first_touch: Vec<*mut i32> = touch.iter_mut().map(|v| v.as_mut_ptr()).collect();
+    let (mut force, mut torque) = ([0.0_f32; 9], [0.0_f32; 9]);
+    let mut table = null_mut();
+    let atoms = ss_atoms::<f32> {
+        count: 3,
+        owned: 3,
+        position: position.as_ptr(),
+        velocity: velocity.as_ptr(),
+        angular_velocity: spin.as_ptr(),
+        radius: radius.as_ptr(),
+        mass: mass.as_ptr(),
+        types: types.as_ptr(),
+        first_type: 0,
+    };
+    let list = ss_neighbours {
+        count: 3,
+        atoms: [0, 1, 2].as_ptr(),
+        neighbour_counts: [1, 1, 0].as_ptr(),
+        first_neighbour: first.as_ptr(),
+        index_mask: -1,
+    };
+    let history = ss_history::<f32> {
+        values: 3,
+        first_value: first_value.as_ptr(),
+        first_touch: first_touch.as_ptr(),
+    };
+    let loads = ss_loads::<f32> {
+        force: force.as_mut_ptr(),
+        torque: torque.as_mut_ptr(),
+        newton: 1,
+        pair_force: null_mut(),
+    };
+    let mut report = ss_list_report::default();
+    // SAFETY: valid pointers throughout, as long as they say.
+    unsafe {
+        assert_eq!(ss_table_new_f32(&config, &mut table), SS_OK);
+        assert_eq!(
+            ss_table_set_f32(table, 0, 0, &coefficients(1.0e3), null_mut()),
+            SS_OK
+        );
+        assert_eq!(
+            ss_table_set_f32(table, 1, 1, &coefficients(4.0e3), null_mut()),
+            SS_OK
+        );
+        assert_eq!(
+            ss_table_prepare_f32(table, 1.0e-6, [1.0e-5_f32; 2].as_ptr(), null_mut()),
+            SS_OK
+        );
+        let code = ss_table_evaluate_f32(table, &atoms, &list, &history, &loads, 1, &mut report);
+        assert_eq!(code, SS_OK);
+        ss_table_free_f32(table);
+    }
+    assert_eq!(report.contacts, 2);
+    // The reference: each pair's law from the mixed coefficients (sqrt(1e3 * 4e3) = 2e3).
+    let sphere = |k: usize| ss_sphere::<f32> {
+        position: ss_vec3 {
+            x: position[3 * k],
+            y: position[3 * k + 1],
+            z: position[3 * k + 2],
+        },
+        velocity: ss_vec3 {
+            x: velocity[3 * k],
+            y: velocity[3 * k + 1],
+            z: velocity[3 * k + 2],
+        },
+        angular_velocity: ss_vec3 {
+            x: spin[3 * k],
+            y: spin[3 * k + 1],
+            z: spin[3 * k + 2],
+        },
+        radius: radius[k],
+        mass: mass[k],
+    };
+    let (mut expected_force, mut expected_torque) = ([0.0_f32; 9], [0.0_f32; 9]);
+    let starts = [[1e-6_f32, -2e-6, 0.0], [0.0, 3e-6, 1e-6]];
+    for (pair, [i, j]) in [[0usize, 1usize], [1, 2]].into_iter().enumerate() {
+        let mixed = (1.0e3_f32 * 4.0e3).sqrt();
+        let params = ss_params::<f32> {
+            model: SS_MODEL_AA,
+            normal_stiffness: mixed,
+            restitution: 0.9,
+            tangential_stiffness: ((0.3 * 1.0e3_f32) * (0.3 * 4.0e3_f32)).sqrt(),
+            dashpot_ratio: 0.5,
+            friction: 0.4,
+            time_step: 1.0e-6,
+            smallest_effective_mass: 5.0e-6,
+            ..Default::default()
+        };
+        let mut state = ss_state::<f32>::default();
+        let s = starts[pair];
+        state.displacement = ss_vec3 {
+            x: s[0],
+            y: s[1],
+            z: s[2],
+        };
+        let mut out = ss_forces::default();
+        let mut law = null_mut();
+        // SAFETY: valid pointers.
+        unsafe {
+            assert_eq!(ss_law_new_f32(&params, &mut law), SS_OK);
+            assert_eq!(
+                ss_sphere_sphere_f32(law, &sphere(i), &sphere(j), &mut state, &mut out),
+                SS_OK
+            );
+            ss_law_free_f32(law);
+        }
+        assert_eq!(out.touching, 1);
+        let stored = &values[i];
+        assert_eq!(
+            stored.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+            [
+                state.displacement.x,
+                state.displacement.y,
+                state.displacement.z
+            ]
+            .map(f32::to_bits)
+        );
+        let f = [out.force_on_j.x, out.force_on_j.y, out.force_on_j.z];
+        let (ti, tj) = (out.torque_on_i, out.torque_on_j);
+        for (c, (a, b)) in [(ti.x, tj.x), (ti.y, tj.y), (ti.z, tj.z)]
+            .into_iter()
+            .enumerate()
+        {
+            expected_force[3 * i + c] -= f[c];
+            expected_force[3 * j + c] += f[c];
+            expected_torque[3 * i + c] += a;
+            expected_torque[3 * j + c] += b;
+        }
+    }
+    assert_eq!(force.map(f32::to_bits), expected_force.map(f32::to_bits));
+    assert_eq!(torque.map(f32::to_bits), expected_torque.map(f32::to_bits));
+    assert_eq!(touch, vec![vec![1], vec![1], vec![]]);
+}
