@@ -4,6 +4,7 @@
 #      Rust validation run;
 #   1b. Hertz-Mindlin (Chung & Ooi Test 5, two spheres) against LAMMPS's own pair granular;
 #   1c. the wall fix with a Hertz law: a head-on rebound at e;
+#   1d. rolling resistance in the pair style: a sphere held on a slope up to mu_r, not beyond;
 #   2. the same physics as LAMMPS's own gran/hooke/history on a granular gas of equal spheres;
 #   3. the reference scene on 1, 2 and 4 MPI ranks, and a stored spring carried between ranks;
 #   3b. a mixture of two materials against pair granular (hooke, hertz/material) with per-type
@@ -64,6 +65,14 @@ compare "$u" "$(echo "$expected" | cut -d, -f2)" 1e-4 && compare "$w_ratio" "$(e
   && compare "$u" 0.714285714 5e-3 && compare "$w_ratio" 0.714285714 5e-3 || plate_ok=1
 result "plate in LAMMPS (aa)" "$plate_ok" "u/u0 $u, w R/u0 $w_ratio (5/7 within 0.5 %, the Rust run within 1e-4)"
 
+# The thermo output of the decks below: kinetic and rotational energy and contacts, every digit.
+thermo_lines() { # interval
+  printf '%s\n' "compute rotational all erotate/sphere" "compute contacts all contact/atom" \
+    "compute total_contacts all reduce sum c_contacts" \
+    "thermo_style custom step ke c_rotational c_total_contacts" \
+    "thermo_modify format float %.16e" "thermo $1"
+}
+
 # The last thermo row of a log: "step ke rotational contacts".
 last_row() { python3 - "$1" <<'PY'
 import sys
@@ -123,6 +132,52 @@ ratio="$(python3 -c "print(${rebound:-0} / 0.5)")"
 compare "$ratio" 0.7 1.6e-3
 result "hertz/aa floor (fix wall/soft/sphere), head-on at 0.5 m/s" $? "rebound ratio $ratio for e = 0.7 (bound 0.16 %)"
 
+# 1d. Rolling resistance (pair_coeff ... rolling mu_r k_r eta_r, the elastic-plastic law): a 1 mm
+# sphere rests on a fixed 20 mm sphere (aa, mu 1, so it cannot slide) under gravity tilted by
+# tan(theta) from the line of centres. The rolling torque is limited to mu_r R* |F_n|, which
+# holds it while tan(theta) < mu_r R* / R = 0.19 (mu_r = 0.2, R* = 0.952 R): at 0.15 it must stay
+# (within 2 um after 20 ms), at 0.25 it must roll away, as it does at 0.15 with no resistance.
+cat > "$work/roll.in" <<'ROLL'
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block -0.02 0.02 -0.02 0.02 -0.02 0.02
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0 0 0.0104999
+set atom 1 diameter 0.02 density 2500
+set atom 2 diameter 1e-3 density 2500
+group small id 2
+plugin load ${plugin}
+pair_style soft/sphere
+pair_coeff * * aa 1000 0.5 285.7 0.5 1.0 ${rolling}
+neighbor 2e-4 bin
+neigh_modify every 1 delay 0 check yes
+fix integrate small nve/sphere
+fix weight small gravity 9.81 vector ${tilt} 0 -1
+timestep 1e-6
+compute spin all property/atom omegay
+variable x equal x[2]
+variable w equal c_spin[2]
+thermo_style custom step v_x v_w
+thermo 20000
+run 20000
+print "RESULT $(v_x:%.9e) $(v_w:%.6e)"
+ROLL
+roll() { # rolling keywords, tilt
+  (cd "$work" && "$lmp" -in roll.in -var plugin "$plugin" -var rolling "$1" -var tilt "$2" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2-)
+}
+held="$(roll "rolling 0.2 1e-6 5e-10" 0.15)"; rolled="$(roll "rolling 0.2 1e-6 5e-10" 0.25)"; free="$(roll "" 0.15)"
+python3 -c "
+import sys
+held, rolled, free = [list(map(float, s.split())) for s in sys.argv[1:]]
+sys.exit(0 if abs(held[0]) < 2e-6 and abs(held[1]) < 1e-2 and rolled[0] > 2e-5 and free[0] > 2e-5 else 1)
+" "${held:-nan nan}" "${rolled:-nan nan}" "${free:-nan nan}"
+result "rolling resistance holds a sphere up to its slope (pair style)" $? \
+  "x and spin after 20 ms: tan 0.15 held [$held], tan 0.25 [$rolled], no resistance at 0.15 [$free]"
+
 # 2. The same physics as the native style: a granular gas of 1,000 equal spheres, periodic, no
 # walls (the native gamma_n is per unit mass, so it matches e only for equal masses).
 mass_star="$(python3 -c "import math; print(2500 * math.pi / 6 * 1e-9 / 2)")"
@@ -151,12 +206,7 @@ neighbor 1e-4 bin
 neigh_modify every 1 delay 0 check yes
 fix integrate all nve/sphere
 timestep 2e-6
-compute rotational all erotate/sphere
-compute contacts all contact/atom
-compute total_contacts all reduce sum c_contacts
-thermo_style custom step ke c_rotational c_total_contacts
-thermo_modify format float %.16e
-thermo 1000
+$(thermo_lines 1000)
 run 3000
 GAS
   run_lmp -in "gas_$1.in" -log "gas_$1.log"
@@ -288,14 +338,9 @@ neighbor 2e-4 bin
 neigh_modify every 1 delay 0 check yes
 fix integrate all nve/sphere
 timestep 1e-6
-compute rotational all erotate/sphere
-compute contacts all contact/atom
-compute total_contacts all reduce sum c_contacts
-thermo_style custom step ke c_rotational c_total_contacts
-thermo_modify format float %.16e
-thermo 1000
-run 3000
 MIX
+    thermo_lines 1000
+    echo "run 3000"
   } > "$work/mix_$name.in"
   (cd "$work" && mpirun -np "$ranks" "$lmp" -in "mix_$name.in" -var plugin "$plugin" -log "mix_$name.log" -screen none > /dev/null 2>&1)
   last_row "$work/mix_$name.log"
@@ -439,12 +484,7 @@ fix integrate all nve/sphere
 fix weight all gravity 9.81 vector 0 0 -1
 fix $wall all wall/soft/sphere aa 4000 0.8 1142.857142857143 0.5 0.5 zplane 0.0 NULL
 timestep 2e-6
-compute rotational all erotate/sphere
-compute contacts all contact/atom
-compute total_contacts all reduce sum c_contacts
-thermo_style custom step ke c_rotational c_total_contacts
-thermo_modify format float %.16e
-thermo 500
+$(thermo_lines 500)
 SET
     if [ -z "$from" ]; then
       printf '%s\n' "run 1500" "write_restart settle.restart" "run 1500"
@@ -651,6 +691,11 @@ bad_pairs "a Hertz law without its impact" "give it as pair_style soft/sphere im
   "pair_style soft/sphere" "pair_coeff * * hertz/aa 5e6 0.3 0.9 0.5 0.5"
 bad_pairs "Poisson's ratio past 0.5" "nu (Poisson's ratio) must lie in" \
   "pair_style soft/sphere impact 1" "pair_coeff * * hertz/aa 5e6 0.7 0.9 0.5 0.5"
+bad_pairs "rolling resistance on some pairs only" "rolling resistance given to some pairs and not to others" \
+  "pair_style soft/sphere" "pair_coeff 1 1 aa 1000 0.9 285.7 0.5 0.5 rolling 0.1 1e-6 0" \
+  "pair_coeff 2 2 aa 1000 0.9 285.7 0.5 0.5"
+bad_pairs "negative rolling friction" "mu_r (rolling friction) must not be negative" \
+  "pair_style soft/sphere" "pair_coeff * * aa 1000 0.9 285.7 0.5 0.5 rolling -0.1 1e-6 0"
 # A step the declared impact (1 mm/s) allows, and two atoms pressed 0.2 mm together: far stiffer.
 bad_pairs "a Hertz contact past its declared impact" "contact of atoms 1 and 2: the contact is stiffer" \
   "pair_style soft/sphere impact 0.001" "pair_coeff * * hertz/aa 5e6 0.3 0.9 0.5 0.5" \

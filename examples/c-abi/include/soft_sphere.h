@@ -196,6 +196,21 @@
 #define SS_PARAMETER_RADIUS 12
 
 /**
+ * The rolling friction `mu_r`.
+ */
+#define SS_PARAMETER_ROLLING_FRICTION 13
+
+/**
+ * The rolling stiffness `k_r`.
+ */
+#define SS_PARAMETER_ROLLING_STIFFNESS 14
+
+/**
+ * The rolling dashpot `eta_r`.
+ */
+#define SS_PARAMETER_ROLLING_DAMPING 15
+
+/**
  * The most materials a table holds (LAMMPS atom types).
  */
 #define SS_MATERIALS_MAX 16
@@ -221,6 +236,18 @@
  * The table's time step has not been checked (`ss_table_prepare_*`) since it last changed.
  */
 #define SS_ERR_NOT_PREPARED 19
+
+/**
+ * No rolling resistance.
+ */
+#define SS_ROLLING_NONE 0
+
+/**
+ * The elastic-plastic spring-dashpot rolling resistance (the kernel's `ElasticPlasticRolling`;
+ * Ai et al. 2011, model C): a rolling spring `k_r` limited to `mu_r R* |F_n|`, a dashpot
+ * `eta_r` below the limit. Not with the frictionless families.
+ */
+#define SS_ROLLING_EPSD 1
 
 /**
  * A law bound to its time step, for one thread's run of calls (opaque to C). It remembers the
@@ -619,6 +646,15 @@ typedef struct {
    */
   int32_t model;
   /**
+   * `SS_ROLLING_*`: every pair's rolling resistance.
+   */
+  int32_t rolling;
+  /**
+   * `SS_ROLLING_EPSD`: the smallest effective moment of inertia of any contact (kg m^2; for
+   * two solid spheres, at least half the smaller `2/5 m R^2`), which the step is checked for.
+   */
+  double smallest_inertia;
+  /**
    * How many materials (at most `SS_MATERIALS_MAX`).
    */
   size_t materials;
@@ -666,6 +702,18 @@ typedef struct {
    * Poisson's ratio nu, in (-1, 0.5], Hertz laws.
    */
   double poisson_ratio;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling friction `mu_r`.
+   */
+  double rolling_friction;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling stiffness `k_r` (N m/rad).
+   */
+  double rolling_stiffness;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling dashpot `eta_r` (N m s/rad).
+   */
+  double rolling_damping;
 } ss_coefficients_f64;
 
 /**
@@ -1155,6 +1203,15 @@ typedef struct {
    */
   int32_t model;
   /**
+   * `SS_ROLLING_*`: every pair's rolling resistance.
+   */
+  int32_t rolling;
+  /**
+   * `SS_ROLLING_EPSD`: the smallest effective moment of inertia of any contact (kg m^2; for
+   * two solid spheres, at least half the smaller `2/5 m R^2`), which the step is checked for.
+   */
+  float smallest_inertia;
+  /**
    * How many materials (at most `SS_MATERIALS_MAX`).
    */
   size_t materials;
@@ -1202,6 +1259,18 @@ typedef struct {
    * Poisson's ratio nu, in (-1, 0.5], Hertz laws.
    */
   float poisson_ratio;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling friction `mu_r`.
+   */
+  float rolling_friction;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling stiffness `k_r` (N m/rad).
+   */
+  float rolling_stiffness;
+  /**
+   * `SS_ROLLING_EPSD`: the rolling dashpot `eta_r` (N m s/rad).
+   */
+  float rolling_damping;
 } ss_coefficients_f32;
 
 /**

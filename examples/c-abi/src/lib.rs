@@ -23,9 +23,9 @@
 pub mod table;
 
 pub use table::{
-    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX, ss_atoms,
-    ss_coefficients, ss_history, ss_list_report, ss_loads, ss_neighbours, ss_table,
-    ss_table_config, ss_table_report,
+    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX,
+    SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_coefficients, ss_history, ss_list_report,
+    ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report,
 };
 
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
@@ -34,8 +34,8 @@ use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless, Hertz,
     HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MindlinAA,
     MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, ModelAA, ModelAALuding,
-    Parameter, ParameterError, Sphere, SpringDisplacement, Stateless, Std, TangentialParameters,
-    TimeStep, Vec3, Wall,
+    Parameter, ParameterError, RollingSpring, Sphere, SpringDisplacement, Stateless, Std,
+    TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -115,6 +115,12 @@ pub const SS_PARAMETER_POISSON_RATIO: i32 = 10;
 pub const SS_PARAMETER_SPEED: i32 = 11;
 /// `largest_effective_radius`.
 pub const SS_PARAMETER_RADIUS: i32 = 12;
+/// The rolling friction `mu_r`.
+pub const SS_PARAMETER_ROLLING_FRICTION: i32 = 13;
+/// The rolling stiffness `k_r`.
+pub const SS_PARAMETER_ROLLING_STIFFNESS: i32 = 14;
+/// The rolling dashpot `eta_r`.
+pub const SS_PARAMETER_ROLLING_DAMPING: i32 = 15;
 
 /// Which parameter `error` is about, as an `SS_PARAMETER_*` code.
 fn rejected_parameter(error: ParameterError) -> i32 {
@@ -139,6 +145,9 @@ fn rejected_parameter(error: ParameterError) -> i32 {
         Parameter::PoissonRatio => SS_PARAMETER_POISSON_RATIO,
         Parameter::Speed => SS_PARAMETER_SPEED,
         Parameter::Radius => SS_PARAMETER_RADIUS,
+        Parameter::RollingFriction => SS_PARAMETER_ROLLING_FRICTION,
+        Parameter::RollingStiffness => SS_PARAMETER_ROLLING_STIFFNESS,
+        Parameter::RollingDamping => SS_PARAMETER_ROLLING_DAMPING,
         _ => SS_PARAMETER_MASS,
     }
 }
@@ -612,6 +621,44 @@ impl<F: Float> Stored<F> for MindlinSpring<F> {
         MindlinSpring {
             force: -self.force,
             contact_radius: self.contact_radius,
+        }
+    }
+}
+
+/// The rolling spring beside a tangential state: its torque on i after the tangential numbers
+/// (the list entry's flat history only; the single-contact calls have no rolling).
+impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
+    const ARRAYS: StateArrays = S::ARRAYS;
+    const VALUES: usize = S::VALUES + 3;
+    fn load(state: &ss_state<F>) -> Self {
+        RollingSpring {
+            tangential: S::load(state),
+            torque: Vec3::ZERO,
+        }
+    }
+    fn store(&self, state: &mut ss_state<F>) {
+        self.tangential.store(state);
+    }
+    #[inline(always)]
+    fn read(values: &[F]) -> Self {
+        let (tangential, torque) = values.split_at(S::VALUES);
+        RollingSpring {
+            tangential: S::read(tangential),
+            torque: Vec3::new(torque[0], torque[1], torque[2]),
+        }
+    }
+    #[inline(always)]
+    fn write(&self, values: &mut [F]) {
+        let (tangential, torque) = values.split_at_mut(S::VALUES);
+        self.tangential.write(tangential);
+        let t = self.torque;
+        torque[..3].copy_from_slice(&[t.x, t.y, t.z]);
+    }
+    /// The torque on i becomes the torque on j: negated.
+    fn mirrored(&self) -> Self {
+        RollingSpring {
+            tangential: self.tangential.mirrored(),
+            torque: -self.torque,
         }
     }
 }

@@ -8,10 +8,11 @@
 //! caller gave as it was.
 
 use soft_sphere::{
-    Backup, CheckedSphere, ContactList, ElasticMaterial, Float, Frictionless, HertzImpact,
-    HertzMixing, Interaction, Law, LinearMaterial, LinearMixing, ListError, ListOutput, ListStats,
-    Material, MaterialTable, MindlinAA, MindlinAALuding, MindlinStateless, Mixing, ModelAA,
-    ModelAALuding, ParameterError, Sphere, SphereArrays, Stateless, TimeStep, Vec3,
+    Backup, CheckedSphere, ContactLaw, ContactList, ElasticMaterial, ElasticPlasticRolling, Float,
+    Frictionless, HertzImpact, HertzMixing, Interaction, Law, LinearMaterial, LinearMixing,
+    ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend, MindlinAA,
+    MindlinAALuding, MindlinStateless, Mixing, ModelAA, ModelAALuding, NormalModel, ParameterError,
+    Rotation, Sphere, SphereArrays, Stateless, TangentialModel, TimeStep, Vec3,
 };
 
 use crate::{
@@ -36,12 +37,24 @@ pub const SS_ERR_MATERIAL: i32 = 18;
 /// The table's time step has not been checked (`ss_table_prepare_*`) since it last changed.
 pub const SS_ERR_NOT_PREPARED: i32 = 19;
 
+/// No rolling resistance.
+pub const SS_ROLLING_NONE: i32 = 0;
+/// The elastic-plastic spring-dashpot rolling resistance (the kernel's `ElasticPlasticRolling`;
+/// Ai et al. 2011, model C): a rolling spring `k_r` limited to `mu_r R* |F_n|`, a dashpot
+/// `eta_r` below the limit. Not with the frictionless families.
+pub const SS_ROLLING_EPSD: i32 = 1;
+
 /// What a table is made for: one family of laws for every pair of materials.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ss_table_config<F> {
     /// `SS_MODEL_*`: every pair's law is of this family.
     pub model: i32,
+    /// `SS_ROLLING_*`: every pair's rolling resistance.
+    pub rolling: i32,
+    /// `SS_ROLLING_EPSD`: the smallest effective moment of inertia of any contact (kg m^2; for
+    /// two solid spheres, at least half the smaller `2/5 m R^2`), which the step is checked for.
+    pub smallest_inertia: F,
     /// How many materials (at most `SS_MATERIALS_MAX`).
     pub materials: usize,
     /// `SS_MODEL_HERTZ_*`: the fastest normal approach the time step is checked for (m/s).
@@ -70,6 +83,12 @@ pub struct ss_coefficients<F> {
     pub youngs_modulus: F,
     /// Poisson's ratio nu, in (-1, 0.5], Hertz laws.
     pub poisson_ratio: F,
+    /// `SS_ROLLING_EPSD`: the rolling friction `mu_r`.
+    pub rolling_friction: F,
+    /// `SS_ROLLING_EPSD`: the rolling stiffness `k_r` (N m/rad).
+    pub rolling_stiffness: F,
+    /// `SS_ROLLING_EPSD`: the rolling dashpot `eta_r` (N m s/rad).
+    pub rolling_damping: F,
 }
 
 /// Why `ss_table_prepare_*` refused: the pair of materials and, for a refused step, the largest
@@ -212,6 +231,74 @@ struct Workspace<F, S> {
 type Linear<F, T> = LinearMixing<F, T>;
 type Elastic<F, T> = HertzMixing<F, T>;
 
+/// A family's properties with the rolling coefficients beside them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Rolling<P, F> {
+    material: P,
+    /// `mu_r`, `k_r`, `eta_r`.
+    rolling: [F; 3],
+}
+
+/// A family's mixing rule with the elastic-plastic rolling resistance added to every law, its
+/// coefficients mixed by their geometric means, as the family's own.
+#[derive(Clone, Copy, Debug)]
+struct Rolled<X, F> {
+    mixing: X,
+    smallest_inertia: F,
+}
+
+impl<F, X, N, T, M, R> Mixing<F> for Rolled<X, F>
+where
+    F: Float,
+    X: Mixing<F, Law = ContactLaw<F, N, T, M, R>>,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+{
+    type Properties = Rolling<X::Properties, F>;
+    type Law = ContactLaw<F, N, T, M, R, ElasticPlasticRolling<F>>;
+
+    fn law(&self, i: &Self::Properties, j: &Self::Properties) -> Result<Self::Law, ParameterError> {
+        let law = self.mixing.law(&i.material, &j.material)?;
+        let mean = |k: usize| {
+            let (a, b) = (i.rolling[k], j.rolling[k]);
+            if a == b {
+                a
+            } else {
+                F::DefaultBackend::sqrt(a * b)
+            }
+        };
+        let rolling = ElasticPlasticRolling::new(mean(0), mean(1), mean(2), self.smallest_inertia)?;
+        Ok(law.with_rolling(rolling))
+    }
+}
+
+fn rolling_of<F: Float>(c: &ss_coefficients<F>) -> [F; 3] {
+    [c.rolling_friction, c.rolling_stiffness, c.rolling_damping]
+}
+
+fn rolled_linear<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<Rolling<LinearMaterial<F>, F>, ParameterError> {
+    Ok(Rolling {
+        material: linear(c)?,
+        rolling: rolling_of(c),
+    })
+}
+
+fn rolled_elastic<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<Rolling<ElasticMaterial<F>, F>, ParameterError> {
+    Ok(Rolling {
+        material: elastic(c)?,
+        rolling: rolling_of(c),
+    })
+}
+
+type RolledLinear<F, T> = Rolled<LinearMixing<F, T>, F>;
+type RolledElastic<F, T> = Rolled<HertzMixing<F, T>, F>;
+
 #[derive(Debug)]
 enum AnyTable<F: Float> {
     Stateless(Box<Tabled<F, Linear<F, Stateless<F>>>>),
@@ -222,6 +309,12 @@ enum AnyTable<F: Float> {
     HertzAA(Box<Tabled<F, Elastic<F, MindlinAA<F>>>>),
     HertzAALuding(Box<Tabled<F, Elastic<F, MindlinAALuding<F>>>>),
     HertzFrictionless(Box<Tabled<F, Elastic<F, Frictionless>>>),
+    RolledStateless(Box<Tabled<F, RolledLinear<F, Stateless<F>>>>),
+    RolledAA(Box<Tabled<F, RolledLinear<F, ModelAA<F>>>>),
+    RolledAALuding(Box<Tabled<F, RolledLinear<F, ModelAALuding<F>>>>),
+    RolledHertzStateless(Box<Tabled<F, RolledElastic<F, MindlinStateless<F>>>>),
+    RolledHertzAA(Box<Tabled<F, RolledElastic<F, MindlinAA<F>>>>),
+    RolledHertzAALuding(Box<Tabled<F, RolledElastic<F, MindlinAALuding<F>>>>),
 }
 
 /// `$body` with `$t` bound to the family's table inside an [`AnyTable`].
@@ -236,6 +329,12 @@ macro_rules! each_table {
             AnyTable::HertzAA($t) => $body,
             AnyTable::HertzAALuding($t) => $body,
             AnyTable::HertzFrictionless($t) => $body,
+            AnyTable::RolledStateless($t) => $body,
+            AnyTable::RolledAA($t) => $body,
+            AnyTable::RolledAALuding($t) => $body,
+            AnyTable::RolledHertzStateless($t) => $body,
+            AnyTable::RolledHertzAA($t) => $body,
+            AnyTable::RolledHertzAALuding($t) => $body,
         }
     };
 }
@@ -770,6 +869,11 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
             .law(&probe, &probe)
             .map_err(parameter_code)?;
     }
+    match config.rolling {
+        SS_ROLLING_NONE => {}
+        SS_ROLLING_EPSD => return rolled_table(config, impact),
+        _ => return Err(SS_ERR_UNKNOWN_MODEL),
+    }
     Ok(match config.model {
         SS_MODEL_STATELESS => {
             AnyTable::Stateless(Tabled::new(LinearMixing::new(Stateless), linear, m))
@@ -799,6 +903,68 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
         SS_MODEL_HERTZ_FRICTIONLESS => AnyTable::HertzFrictionless(Tabled::new(
             HertzMixing::new(impact, |_| Frictionless),
             elastic_frictionless,
+            m,
+        )),
+        _ => return Err(SS_ERR_UNKNOWN_MODEL),
+    })
+}
+
+/// A table of laws with the elastic-plastic rolling resistance (the smallest inertia checked
+/// here).
+fn rolled_table<F: Float>(
+    config: &ss_table_config<F>,
+    impact: HertzImpact<F>,
+) -> Result<AnyTable<F>, i32> {
+    let (m, smallest_inertia) = (config.materials, config.smallest_inertia);
+    ElasticPlasticRolling::new(F::ZERO, F::ONE, F::ZERO, smallest_inertia)
+        .map_err(parameter_code)?;
+    Ok(match config.model {
+        SS_MODEL_STATELESS => AnyTable::RolledStateless(Tabled::new(
+            Rolled {
+                mixing: LinearMixing::new(Stateless),
+                smallest_inertia,
+            },
+            rolled_linear,
+            m,
+        )),
+        SS_MODEL_AA => AnyTable::RolledAA(Tabled::new(
+            Rolled {
+                mixing: LinearMixing::new(ModelAA),
+                smallest_inertia,
+            },
+            rolled_linear,
+            m,
+        )),
+        SS_MODEL_AA_LUDING => AnyTable::RolledAALuding(Tabled::new(
+            Rolled {
+                mixing: LinearMixing::new(ModelAALuding),
+                smallest_inertia,
+            },
+            rolled_linear,
+            m,
+        )),
+        SS_MODEL_HERTZ_STATELESS => AnyTable::RolledHertzStateless(Tabled::new(
+            Rolled {
+                mixing: HertzMixing::new(impact, MindlinStateless),
+                smallest_inertia,
+            },
+            rolled_elastic,
+            m,
+        )),
+        SS_MODEL_HERTZ_AA => AnyTable::RolledHertzAA(Tabled::new(
+            Rolled {
+                mixing: HertzMixing::new(impact, MindlinAA),
+                smallest_inertia,
+            },
+            rolled_elastic,
+            m,
+        )),
+        SS_MODEL_HERTZ_AA_LUDING => AnyTable::RolledHertzAALuding(Tabled::new(
+            Rolled {
+                mixing: HertzMixing::new(impact, MindlinAALuding),
+                smallest_inertia,
+            },
+            rolled_elastic,
             m,
         )),
         _ => return Err(SS_ERR_UNKNOWN_MODEL),

@@ -37,6 +37,9 @@ fn material(m: usize) -> ss_coefficients<f64> {
             friction: 0.3,
             youngs_modulus: 5.0e6,
             poisson_ratio: 0.2,
+            rolling_friction: 0.1,
+            rolling_stiffness: 2.0e-6,
+            rolling_damping: 1.0e-10,
         },
         ss_coefficients {
             normal_stiffness: 4.0e4,
@@ -46,6 +49,9 @@ fn material(m: usize) -> ss_coefficients<f64> {
             friction: 0.5,
             youngs_modulus: 2.0e7,
             poisson_ratio: 0.3,
+            rolling_friction: 0.3,
+            rolling_stiffness: 8.0e-6,
+            rolling_damping: 4.0e-10,
         },
         ss_coefficients {
             normal_stiffness: 2.0e4,
@@ -55,6 +61,9 @@ fn material(m: usize) -> ss_coefficients<f64> {
             friction: 0.8,
             youngs_modulus: 1.0e7,
             poisson_ratio: 0.25,
+            rolling_friction: 0.2,
+            rolling_stiffness: 4.0e-6,
+            rolling_damping: 0.0,
         },
     ][m]
 }
@@ -123,6 +132,7 @@ fn table(model: i32) -> *mut ss_table<f64> {
         materials: 3,
         largest_impact_speed: SPEED,
         largest_effective_radius: RADIUS,
+        ..Default::default()
     };
     let mut table = null_mut();
     // SAFETY: valid pointers throughout.
@@ -701,6 +711,7 @@ fn tables_refuse_bad_coefficients_and_missing_materials() {
         materials: 2,
         largest_impact_speed: SPEED,
         largest_effective_radius: RADIUS,
+        ..Default::default()
     };
     let mut table = null_mut();
     // SAFETY: valid pointers throughout.
@@ -750,6 +761,7 @@ fn tables_refuse_bad_coefficients_and_missing_materials() {
                 materials,
                 largest_impact_speed: speed,
                 largest_effective_radius: RADIUS,
+                ..Default::default()
             };
             let mut table = null_mut();
             assert_eq!(ss_table_new_f64(&config, &mut table), code);
@@ -975,4 +987,139 @@ fn the_f32_list_entry_gives_the_single_calls_bits() {
     assert_eq!(force.map(f32::to_bits), expected_force.map(f32::to_bits));
     assert_eq!(torque.map(f32::to_bits), expected_torque.map(f32::to_bits));
     assert_eq!(touch, vec![vec![1], vec![1], vec![]]);
+}
+
+/// The elastic-plastic rolling resistance through the list entry: each contact the bits of the
+/// kernel's own law with the rolling slot (`ContactLaw::with_rolling`), its coefficients mixed
+/// by their geometric means, the rolling spring kept after the tangential numbers.
+#[test]
+fn rolling_resistance_gives_the_kernel_laws_bits() {
+    use soft_sphere::{
+        ContactLaw, ElasticPlasticRolling, Interaction, LinearSpringDashpot, ModelAA,
+        RollingSpring, Sphere, SpringDisplacement, TangentialParameters, Vec3,
+    };
+    let inertia = 1.0e-12;
+    let config = ss_table_config {
+        model: SS_MODEL_AA,
+        rolling: SS_ROLLING_EPSD,
+        smallest_inertia: inertia,
+        materials: 3,
+        ..Default::default()
+    };
+    let mut table = null_mut();
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        for m in 0..3 {
+            assert_eq!(
+                ss_table_set_f64(table, m, m, &material(m), null_mut()),
+                SS_OK
+            );
+        }
+        assert_eq!(ss_table_set_f64(table, 2, 0, &rough(), null_mut()), SS_OK);
+        assert_eq!(ss_table_state_values_f64(table), 6);
+    }
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    let mut host = Host::new(31, 6);
+    let mut expected = host.clone();
+    for _ in 0..3 {
+        assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
+    }
+    // The reference, pair by pair in list order, three steps.
+    let vector = |a: &[f64], k: usize| Vec3::new(a[3 * k], a[3 * k + 1], a[3 * k + 2]);
+    let mean = |x: f64, y: f64| if x == y { x } else { (x * y).sqrt() };
+    let n = host.radius.len();
+    let mut rolling_pairs = 0;
+    for _ in 0..3 {
+        let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+        for &i in &expected.list.clone() {
+            let i = i as usize;
+            for (jj, &j) in expected.neighbours[i].clone().iter().enumerate() {
+                let j = j as usize;
+                let (a, b) = (
+                    expected.types[i] as usize - 1,
+                    expected.types[j] as usize - 1,
+                );
+                let (p, q) = if (a, b) == (0, 2) || (a, b) == (2, 0) {
+                    (rough(), rough())
+                } else {
+                    (material(a), material(b))
+                };
+                let law = ContactLaw::new(
+                    LinearSpringDashpot::new(
+                        mean(p.normal_stiffness, q.normal_stiffness),
+                        mean(p.restitution, q.restitution),
+                    )
+                    .unwrap(),
+                    ModelAA(
+                        TangentialParameters::new(
+                            mean(p.tangential_stiffness, q.tangential_stiffness),
+                            mean(p.dashpot_ratio, q.dashpot_ratio),
+                            mean(p.friction, q.friction),
+                        )
+                        .unwrap(),
+                    ),
+                )
+                .with_rolling(
+                    ElasticPlasticRolling::new(
+                        mean(p.rolling_friction, q.rolling_friction),
+                        mean(p.rolling_stiffness, q.rolling_stiffness),
+                        mean(p.rolling_damping, q.rolling_damping),
+                        inertia,
+                    )
+                    .unwrap(),
+                );
+                let step = law.time_step(DT, 5.0e-6).unwrap();
+                let stored = &mut expected.history[i][6 * jj..6 * jj + 6];
+                let mut state = RollingSpring {
+                    tangential: SpringDisplacement {
+                        displacement: Vec3::new(stored[0], stored[1], stored[2]),
+                    },
+                    torque: Vec3::new(stored[3], stored[4], stored[5]),
+                };
+                let sphere = |k: usize| Sphere {
+                    position: vector(&expected.position, k),
+                    velocity: vector(&expected.velocity, k),
+                    angular_velocity: vector(&expected.spin, k),
+                    radius: expected.radius[k],
+                    mass: expected.mass[k],
+                };
+                let outcome = law.sphere_sphere(&sphere(i), &sphere(j), &mut state, step);
+                let d = state.tangential.displacement;
+                let t = state.torque;
+                stored.copy_from_slice(&[d.x, d.y, d.z, t.x, t.y, t.z]);
+                if let Interaction::Touching(c) = outcome.unwrap() {
+                    force[i] -= c.force_on_j();
+                    force[j] += c.force_on_j();
+                    torque[i] += c.torque_on_i;
+                    torque[j] += c.torque_on_j;
+                    rolling_pairs += usize::from(t != Vec3::ZERO);
+                }
+            }
+        }
+        for k in 0..n {
+            for (c, (f, t)) in [
+                (force[k].x, torque[k].x),
+                (force[k].y, torque[k].y),
+                (force[k].z, torque[k].z),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                expected.force[3 * k + c] += f;
+                expected.torque[3 * k + c] += t;
+            }
+        }
+    }
+    assert!(
+        rolling_pairs > 40,
+        "rolling springs must be at work: {rolling_pairs}"
+    );
+    assert_eq!(bits(&host.force), bits(&expected.force));
+    assert_eq!(bits(&host.torque), bits(&expected.torque));
+    for (a, b) in host.history.iter().zip(&expected.history) {
+        assert_eq!(bits(a), bits(b));
+    }
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
 }

@@ -21,7 +21,8 @@ using namespace LAMMPS_NS;
 static const char *STYLE = "pair_style soft/sphere";
 
 PairSoftSphere::PairSoftSphere(LAMMPS *lmp) :
-    PairGranHookeHistory(lmp), model(-1), style_law(0), impact_speed(0.0), history_made(0),
+    PairGranHookeHistory(lmp), model(-1), style_law(0), rolling(-1), impact_speed(0.0),
+    history_made(0),
     table(nullptr)
 {
   std::memset(&style_coefficients, 0, sizeof(style_coefficients));
@@ -43,18 +44,23 @@ void PairSoftSphere::settings(int narg, char **arg)
     model = SoftSphere::model(lmp, STYLE, arg[0]);
     style_coefficients = SoftSphere::coefficients(lmp, model, &arg[1]);
     style_law = 1;
+    rolling = SS_ROLLING_NONE;
     k = 6;
   }
   while (k < narg) {
-    if (std::strcmp(arg[k], "impact") == 0 && k + 1 < narg) {
+    if (style_law && std::strcmp(arg[k], "rolling") == 0 && k + 3 < narg) {
+      SoftSphere::rolling(lmp, style_coefficients, &arg[k + 1]);
+      rolling = SS_ROLLING_EPSD;
+      k += 4;
+    } else if (std::strcmp(arg[k], "impact") == 0 && k + 1 < narg) {
       impact_speed = utils::numeric(FLERR, arg[k + 1], false, lmp);
       if (!(impact_speed > 0.0) || !std::isfinite(impact_speed))
         error->all(FLERR, "{}: the impact speed must be a positive number", STYLE);
       k += 2;
     } else
       error->all(FLERR,
-                 "Illegal pair_style soft/sphere command: expected [LAW five numbers] "
-                 "[impact V]");
+                 "Illegal pair_style soft/sphere command: expected [LAW five numbers "
+                 "[rolling mu_r k_r eta_r]] [impact V]");
   }
   // The base class's fields, for what it reports; the forces come from the kernel.
   kn = style_coefficients.normal_stiffness;
@@ -77,7 +83,8 @@ void PairSoftSphere::size_tables()
   }
 }
 
-ss_table_f64 *PairSoftSphere::new_table(int materials, double largest_effective_radius)
+ss_table_f64 *PairSoftSphere::new_table(int materials, double largest_effective_radius,
+                                        double inertia)
 {
   if (SoftSphere::hertz(model) && !(impact_speed > 0.0))
     error->all(FLERR,
@@ -91,8 +98,12 @@ ss_table_f64 *PairSoftSphere::new_table(int materials, double largest_effective_
   config.materials = (size_t) materials;
   config.largest_impact_speed = impact_speed;
   config.largest_effective_radius = largest_effective_radius;
+  config.rolling = rolling > 0 ? rolling : SS_ROLLING_NONE;
+  config.smallest_inertia = inertia;
   ss_table_f64 *made = nullptr;
   const int code = ss_table_new_f64(&config, &made);
+  if (code == SS_ERR_UNKNOWN_MODEL)
+    error->all(FLERR, "{}: the frictionless laws take no rolling resistance", STYLE);
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", STYLE,
                SoftSphere::parameter_name(
@@ -103,15 +114,16 @@ ss_table_f64 *PairSoftSphere::new_table(int materials, double largest_effective_
 
 void PairSoftSphere::coeff(int narg, char **arg)
 {
-  int law = model;
+  int law = model, rolls = rolling;
   ss_coefficients_f64 c = style_coefficients;
+  const int with_rolling = narg == 12 && std::strcmp(arg[8], "rolling") == 0;
   if (narg == 2) {
     if (!style_law)
       error->all(FLERR,
                  "pair_coeff {} {}: no law: give pair_coeff I J LAW and five numbers, or the "
                  "law to pair_style soft/sphere",
                  arg[0], arg[1]);
-  } else if (narg == 8) {
+  } else if (narg == 8 || with_rolling) {
     law = SoftSphere::model(lmp, "pair_coeff", arg[2]);
     if (model >= 0 && law != model)
       error->all(FLERR,
@@ -119,15 +131,23 @@ void PairSoftSphere::coeff(int narg, char **arg)
                  "pair_style soft/sphere (friction 0 makes a pair frictionless)",
                  arg[0], arg[1], arg[2], SoftSphere::law_name(model));
     c = SoftSphere::coefficients(lmp, law, &arg[3]);
+    rolls = with_rolling ? SS_ROLLING_EPSD : SS_ROLLING_NONE;
+    if (with_rolling) SoftSphere::rolling(lmp, c, &arg[9]);
+    if (rolling >= 0 && rolls != rolling)
+      error->all(FLERR,
+                 "pair_coeff {} {}: rolling resistance given to some pairs and not to others: "
+                 "one law per pair_style soft/sphere (mu_r 0 makes a pair roll freely)",
+                 arg[0], arg[1]);
   } else
     error->all(FLERR,
                "Illegal pair_coeff command for soft/sphere: expected I J LAW and five numbers "
-               "(or I J alone, with the law given to pair_style)");
+               "[rolling mu_r k_r eta_r] (or I J alone, with the law given to pair_style)");
   model = law;
+  rolling = rolls;
   size_tables();
 
   // The kernel checks the coefficients now, so a bad one stops the input at this command.
-  ss_table_f64 *probe = new_table(1, 1.0);
+  ss_table_f64 *probe = new_table(1, 1.0, 1.0);
   int parameter = SS_PARAMETER_NONE;
   const int code = ss_table_set_f64(probe, 0, 0, &c, &parameter);
   ss_table_free_f64(probe);
@@ -160,7 +180,8 @@ void PairSoftSphere::init_style()
   ss_table_free_f64(table);
   table = nullptr;
   // The largest pair of spheres has R* = R / 2.
-  table = new_table(atom->ntypes, 0.5 * SoftSphere::largest_radius(lmp));
+  table = new_table(atom->ntypes, 0.5 * SoftSphere::largest_radius(lmp),
+                    rolling > 0 ? SoftSphere::smallest_inertia(lmp) : 1.0);
   const int n = atom->ntypes + 1;
   for (int i = 1; i < n; i++)
     for (int j = i; j < n; j++) {
@@ -381,6 +402,7 @@ void PairSoftSphere::write_restart_settings(FILE *fp)
 {
   fwrite(&model, sizeof(int), 1, fp);
   fwrite(&style_law, sizeof(int), 1, fp);
+  fwrite(&rolling, sizeof(int), 1, fp);
   fwrite(&style_coefficients, sizeof(style_coefficients), 1, fp);
   fwrite(&impact_speed, sizeof(double), 1, fp);
 }
@@ -390,11 +412,13 @@ void PairSoftSphere::read_restart_settings(FILE *fp)
   if (comm->me == 0) {
     utils::sfread(FLERR, &model, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &style_law, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &rolling, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &style_coefficients, sizeof(style_coefficients), 1, fp, nullptr, error);
     utils::sfread(FLERR, &impact_speed, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&model, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_law, 1, MPI_INT, 0, world);
+  MPI_Bcast(&rolling, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_coefficients, sizeof(style_coefficients), MPI_BYTE, 0, world);
   MPI_Bcast(&impact_speed, 1, MPI_DOUBLE, 0, world);
 }

@@ -1,10 +1,11 @@
-/* pair_style soft/sphere [LAW five-numbers] [impact V]: the soft-sphere kernel's contact laws as
- * a LAMMPS granular pair style, a law per pair of atom types.
+/* pair_style soft/sphere [LAW five-numbers [rolling mu_r k_r eta_r]] [impact V]: the
+ * soft-sphere kernel's contact laws as a LAMMPS granular pair style, a law per pair of atom types.
  *
  *   pair_coeff I J LAW k_n e k_t eta_ratio mu     linear laws: aa, aa/luding, stateless,
  *                                                 frictionless
  *   pair_coeff I J LAW E nu e eta_ratio mu        Hertz-Mindlin laws: hertz/aa, hertz/aa/luding,
  *                                                 hertz/stateless, hertz/frictionless
+ *   ... rolling mu_r k_r eta_r                    with the elastic-plastic rolling resistance
  *   pair_coeff * *                                the law given to pair_style
  *
  * I I gives type I's own coefficients; a pair of types not given its own gets the kernel's
@@ -45,6 +46,7 @@ class PairSoftSphere : public PairGranHookeHistory {
  private:
   int model;                           // the kernel's SS_MODEL_*, -1 before any law is given
   int style_law;                       // pair_style gave a law for pair_coeff * *
+  int rolling;                         // SS_ROLLING_*, -1 before any law is given
   ss_coefficients_f64 style_coefficients;
   double impact_speed;                 // Hertz laws: the declared fastest impact (m/s)
   std::vector<ss_coefficients_f64> coefficients;    // (ntypes + 1)^2, by type pair
@@ -54,7 +56,7 @@ class PairSoftSphere : public PairGranHookeHistory {
   std::vector<double> pair_force;      // per neighbour, for the virial
 
   void size_tables();
-  ss_table_f64 *new_table(int materials, double largest_effective_radius);
+  ss_table_f64 *new_table(int materials, double largest_effective_radius, double inertia);
   void prepare();
 };
 

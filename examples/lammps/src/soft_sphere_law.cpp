@@ -72,6 +72,26 @@ ss_coefficients_f64 SoftSphere::coefficients(LAMMPS *lmp, int model, char **arg)
   return c;
 }
 
+void SoftSphere::rolling(LAMMPS *lmp, ss_coefficients_f64 &c, char **arg)
+{
+  c.rolling_friction = utils::numeric(FLERR, arg[0], false, lmp);
+  c.rolling_stiffness = utils::numeric(FLERR, arg[1], false, lmp);
+  c.rolling_damping = utils::numeric(FLERR, arg[2], false, lmp);
+}
+
+double SoftSphere::smallest_inertia(LAMMPS *lmp)
+{
+  double smallest = 1e300;
+  const double *rmass = lmp->atom->rmass, *radius = lmp->atom->radius;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    const double inertia = 0.4 * rmass[i] * radius[i] * radius[i];
+    if (inertia < smallest) smallest = inertia;
+  }
+  double all = smallest;
+  MPI_Allreduce(&smallest, &all, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
+  return 0.5 * all;
+}
+
 ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f64 &c)
 {
   ss_params_f64 p;
@@ -123,6 +143,12 @@ const char *SoftSphere::parameter_name(int parameter, int model)
       return "the impact speed (pair_style soft/sphere impact V)";
     case SS_PARAMETER_RADIUS:
       return "the largest radius";
+    case SS_PARAMETER_ROLLING_FRICTION:
+      return "mu_r (rolling friction)";
+    case SS_PARAMETER_ROLLING_STIFFNESS:
+      return "k_r (rolling stiffness)";
+    case SS_PARAMETER_ROLLING_DAMPING:
+      return "eta_r (rolling dashpot)";
     default:
       return "the law";
   }

@@ -29,6 +29,13 @@ namespace SoftSphere {
   /* The five numbers after a law's name (arg[0] .. arg[4]) as kernel coefficients. */
   ss_coefficients_f64 coefficients(LAMMPS *lmp, int model, char **arg);
 
+  /* The rolling resistance's three numbers (arg[0] .. arg[2]: mu_r k_r eta_r) into `c`. */
+  void rolling(LAMMPS *lmp, ss_coefficients_f64 &c, char **arg);
+
+  /* The smallest effective moment of inertia of a pair of atoms over all ranks: half the
+   * smallest 2/5 m R^2. */
+  double smallest_inertia(LAMMPS *lmp);
+
   /* The one-law parameters of `model` with coefficients `c` for a contact between two bodies
    * of that material (Hertz: E* and G* of the material with itself); the time step, masses and
    * declared impact are filled in by build(). */
