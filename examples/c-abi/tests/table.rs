@@ -1123,3 +1123,31 @@ fn rolling_resistance_gives_the_kernel_laws_bits() {
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }
+
+/// The frictionless families read no tangential coefficient: whatever stands there (a negative
+/// stiffness, a friction that is not a number) is ignored, not refused.
+#[test]
+fn frictionless_tables_ignore_the_tangential_coefficients() {
+    for model in [SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_FRICTIONLESS] {
+        let config = ss_table_config {
+            model,
+            materials: 1,
+            largest_impact_speed: SPEED,
+            largest_effective_radius: RADIUS,
+            ..Default::default()
+        };
+        let ignored = ss_coefficients {
+            tangential_stiffness: -1.0,
+            dashpot_ratio: f64::NAN,
+            friction: f64::NAN,
+            ..material(0)
+        };
+        let mut table = null_mut();
+        // SAFETY: valid pointers throughout.
+        unsafe {
+            assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+            assert_eq!(ss_table_set_f64(table, 0, 0, &ignored, null_mut()), SS_OK, "{model}");
+            ss_table_free_f64(table);
+        }
+    }
+}
