@@ -442,7 +442,15 @@ where
     /// mass of each; absent where it is not a positive finite number).
     fn prepare(&mut self, dt: F, lightest: &[F], report: &mut ss_table_report<F>) -> i32 {
         self.ready = None;
-        let mut table: Option<MaterialTable<X::Law, SS_MATERIALS_MAX>> = None;
+        // Every table has a material 0 (`new_table` refuses none): its law seeds the table.
+        let mut table = match self.law(0, 0) {
+            Ok(law) => MaterialTable::<X::Law, SS_MATERIALS_MAX>::uniform(law),
+            Err((code, parameter)) => {
+                report.materials = [0, 0];
+                report.parameter = parameter;
+                return code;
+            }
+        };
         for a in 0..self.materials {
             for b in a..self.materials {
                 report.materials = [a as i64, b as i64];
@@ -453,16 +461,11 @@ where
                         return code;
                     }
                 };
-                let table = table.get_or_insert_with(|| MaterialTable::uniform(law));
                 if table.set(a, b, law).is_err() {
                     return SS_ERR_MATERIAL;
                 }
             }
         }
-        let Some(table) = table else {
-            report.materials = [-1, -1];
-            return SS_ERR_MATERIAL;
-        };
         // One sphere of each material present, of its lightest mass: the kernel checks the step
         // against every pair of them.
         if !lightest.iter().all(|m| m.is_finite()) {

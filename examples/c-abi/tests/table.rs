@@ -698,8 +698,16 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
     assert_eq!(host, before);
     // A mass that is not a number is refused, not taken for an absent material.
     // SAFETY: valid pointers.
-    let code = unsafe { ss_table_prepare_f64(table, DT, [m, f64::NAN, m].as_ptr(), null_mut()) };
-    assert_eq!(code, SS_ERR_NON_FINITE_INPUT);
+    let mut report = ss_table_report {
+        materials: [7, 7],
+        ..Default::default()
+    };
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_prepare_f64(table, DT, [m, f64::NAN, m].as_ptr(), &mut report) };
+    assert_eq!(
+        (code, report.materials),
+        (SS_ERR_NON_FINITE_INPUT, [-1, -1])
+    );
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }
@@ -1146,7 +1154,11 @@ fn frictionless_tables_ignore_the_tangential_coefficients() {
         // SAFETY: valid pointers throughout.
         unsafe {
             assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
-            assert_eq!(ss_table_set_f64(table, 0, 0, &ignored, null_mut()), SS_OK, "{model}");
+            assert_eq!(
+                ss_table_set_f64(table, 0, 0, &ignored, null_mut()),
+                SS_OK,
+                "{model}"
+            );
             ss_table_free_f64(table);
         }
     }
