@@ -697,7 +697,6 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
     );
     assert_eq!(host, before);
     // A mass that is not a number is refused, not taken for an absent material.
-    // SAFETY: valid pointers.
     let mut report = ss_table_report {
         materials: [7, 7],
         ..Default::default()
