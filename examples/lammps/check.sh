@@ -4,7 +4,8 @@
 #      Rust validation run;
 #   1b. Hertz-Mindlin (Chung & Ooi Test 5, two spheres) against LAMMPS's own pair granular;
 #   1c. the wall fix with a Hertz law: a head-on rebound at e;
-#   1d. rolling resistance in the pair style: a sphere held on a slope up to mu_r, not beyond;
+#   1d. rolling resistance in the pair style and the wall fix: a sphere held on a slope up to
+#       mu_r, not beyond;
 #   2. the same physics as LAMMPS's own gran/hooke/history on a granular gas of equal spheres;
 #   3. the reference scene on 1, 2 and 4 MPI ranks, and a stored spring carried between ranks;
 #   3b. a mixture of two materials against pair granular (hooke, hertz/material) with per-type
@@ -177,6 +178,45 @@ sys.exit(0 if abs(held[0]) < 2e-6 and abs(held[1]) < 1e-2 and rolled[0] > 2e-5 a
 " "${held:-nan nan}" "${rolled:-nan nan}" "${free:-nan nan}"
 result "rolling resistance holds a sphere up to its slope (pair style)" $? \
   "x and spin after 20 ms: tan 0.15 held [$held], tan 0.25 [$rolled], no resistance at 0.15 [$free]"
+
+# The same on the floor (fix wall/soft/sphere ... rolling): R* = R against a wall, so it holds
+# while tan(theta) < mu_r = 0.2: at 0.18 it must stay, at 0.22 roll away.
+cat > "$work/rollwall.in" <<'ROLL'
+units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+comm_modify vel yes
+region box block -0.005 0.005 -0.005 0.005 0 0.01
+create_box 1 box
+create_atoms 1 single 0 0 0.00049999
+set atom 1 diameter 1e-3 density 2500
+plugin load ${plugin}
+pair_style soft/sphere
+pair_coeff * * aa 1000 0.5 285.7 0.5 1.0
+fix integrate all nve/sphere
+fix floor all wall/soft/sphere aa 1000 0.5 285.7 0.5 1.0 ${rolling} zplane 0.0 NULL
+fix weight all gravity 9.81 vector ${tilt} 0 -1
+timestep 1e-6
+compute spin all property/atom omegay
+variable x equal x[1]
+variable w equal c_spin[1]
+thermo_style custom step v_x v_w
+thermo 20000
+run 20000
+print "RESULT $(v_x:%.9e) $(v_w:%.6e)"
+ROLL
+roll_wall() { # rolling keywords, tilt
+  (cd "$work" && "$lmp" -in rollwall.in -var plugin "$plugin" -var rolling "$1" -var tilt "$2" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2-)
+}
+held="$(roll_wall "rolling 0.2 1e-6 5e-10" 0.18)"; rolled="$(roll_wall "rolling 0.2 1e-6 5e-10" 0.22)"; free="$(roll_wall "" 0.18)"
+python3 -c "
+import sys
+held, rolled, free = [list(map(float, s.split())) for s in sys.argv[1:]]
+sys.exit(0 if abs(held[0]) < 2e-6 and abs(held[1]) < 1e-2 and rolled[0] > 2e-5 and free[0] > 2e-5 else 1)
+" "${held:-nan nan}" "${rolled:-nan nan}" "${free:-nan nan}"
+result "rolling resistance holds a sphere up to its slope (wall fix)" $? \
+  "x and spin after 20 ms: tan 0.18 held [$held], tan 0.22 [$rolled], no resistance at 0.18 [$free]"
 
 # 2. The same physics as the native style: a granular gas of 1,000 equal spheres, periodic, no
 # walls (the native gamma_n is per unit mass, so it matches e only for equal masses).

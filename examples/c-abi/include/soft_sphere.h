@@ -873,6 +873,47 @@ typedef struct {
 } ss_list_report;
 
 /**
+ * Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+ * atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
+ * numbers from `states + k * stride + w * wall_stride`.
+ */
+typedef struct {
+  /**
+   * How many walls.
+   */
+  size_t count;
+  /**
+   * The walls.
+   */
+  const ss_wall_f64 *walls;
+  /**
+   * Their material.
+   */
+  uint32_t material;
+  /**
+   * The atoms' states against the walls.
+   */
+  double *states;
+  /**
+   * Numbers per atom in `states`.
+   */
+  size_t stride;
+  /**
+   * Numbers between one wall's state and the next within an atom's.
+   */
+  size_t wall_stride;
+  /**
+   * Null: every owned atom meets the walls; else owned atom `k` does when
+   * `selected[k] & bit` is not 0 (LAMMPS: `mask` and a fix's `groupbit`).
+   */
+  const int32_t *selected;
+  /**
+   * See `selected`.
+   */
+  int32_t bit;
+} ss_walls_f64;
+
+/**
  * Law parameters, validated once by the constructor.
  */
 typedef struct {
@@ -1382,6 +1423,47 @@ typedef struct {
   float *pair_force;
 } ss_loads_f32;
 
+/**
+ * Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+ * atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
+ * numbers from `states + k * stride + w * wall_stride`.
+ */
+typedef struct {
+  /**
+   * How many walls.
+   */
+  size_t count;
+  /**
+   * The walls.
+   */
+  const ss_wall_f32 *walls;
+  /**
+   * Their material.
+   */
+  uint32_t material;
+  /**
+   * The atoms' states against the walls.
+   */
+  float *states;
+  /**
+   * Numbers per atom in `states`.
+   */
+  size_t stride;
+  /**
+   * Numbers between one wall's state and the next within an atom's.
+   */
+  size_t wall_stride;
+  /**
+   * Null: every owned atom meets the walls; else owned atom `k` does when
+   * `selected[k] & bit` is not 0 (LAMMPS: `mask` and a fix's `groupbit`).
+   */
+  const int32_t *selected;
+  /**
+   * See `selected`.
+   */
+  int32_t bit;
+} ss_walls_f32;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1642,6 +1724,27 @@ int32_t ss_table_evaluate_f64(ss_table_f64 *table,
                               const ss_loads_f64 *loads,
                               int32_t advance,
                               ss_list_report *report);
+
+/**
+ * The walls in one call: every selected owned atom against every wall of
+ * `*walls` (all of one material of the table), each contact the same bits as
+ * `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
+ * from `walls->states`. On success the forces and torques are added into `*loads` (the
+ * selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+ * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
+ * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
+ * contact's code. One thread at a time per table.
+ *
+ * # Safety
+ * Every array must hold what its field says (`loads->pair_force` is not read); the
+ * written arrays must not overlap each other or the inputs.
+ */
+int32_t ss_table_evaluate_walls_f64(ss_table_f64 *table,
+                                    const ss_atoms_f64 *atoms,
+                                    const ss_walls_f64 *walls,
+                                    const ss_loads_f64 *loads,
+                                    int32_t advance,
+                                    ss_list_report *report);
 
 /**
  * One pair's contact with the law of materials `a` and `b`, its state read from
@@ -1910,6 +2013,27 @@ int32_t ss_table_evaluate_f32(ss_table_f32 *table,
                               const ss_loads_f32 *loads,
                               int32_t advance,
                               ss_list_report *report);
+
+/**
+ * The walls in one call: every selected owned atom against every wall of
+ * `*walls` (all of one material of the table), each contact the same bits as
+ * `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
+ * from `walls->states`. On success the forces and torques are added into `*loads` (the
+ * selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+ * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
+ * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
+ * contact's code. One thread at a time per table.
+ *
+ * # Safety
+ * Every array must hold what its field says (`loads->pair_force` is not read); the
+ * written arrays must not overlap each other or the inputs.
+ */
+int32_t ss_table_evaluate_walls_f32(ss_table_f32 *table,
+                                    const ss_atoms_f32 *atoms,
+                                    const ss_walls_f32 *walls,
+                                    const ss_loads_f32 *loads,
+                                    int32_t advance,
+                                    ss_list_report *report);
 
 /**
  * One pair's contact with the law of materials `a` and `b`, its state read from

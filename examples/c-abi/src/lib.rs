@@ -25,7 +25,7 @@ pub mod table;
 pub use table::{
     SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX,
     SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_coefficients, ss_history, ss_list_report,
-    ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report,
+    ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report, ss_walls,
 };
 
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
@@ -1571,7 +1571,7 @@ unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -1872,6 +1872,31 @@ macro_rules! entry_points {
             }
         }
 
+        /// The walls in one call: every selected owned atom against every wall of
+        /// `*walls` (all of one material of the table), each contact the same bits as
+        /// `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
+        /// from `walls->states`. On success the forces and torques are added into `*loads` (the
+        /// selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+        /// nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
+        /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
+        /// contact's code. One thread at a time per table.
+        ///
+        /// # Safety
+        /// Every array must hold what its field says (`loads->pair_force` is not read); the
+        /// written arrays must not overlap each other or the inputs.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_walls(
+            table: *mut table::ss_table<$real>,
+            atoms: *const table::ss_atoms<$real>,
+            walls: *const table::ss_walls<$real>,
+            loads: *const table::ss_loads<$real>,
+            advance: i32,
+            report: *mut table::ss_list_report,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_evaluate_walls(table, atoms, walls, loads, advance, report) }
+        }
+
         /// One pair's contact with the law of materials `a` and `b`, its state read from
         /// `values` (`ss_table_state_values_*` numbers; null for a fresh contact) and not
         /// written: what a host reports per pair (LAMMPS `single()`). Writes `*out` on success.
@@ -1921,5 +1946,5 @@ macro_rules! entry_points {
     };
 }
 
-entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_bound_sphere_pairs_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64, ss_table_new_f64, ss_table_free_f64, ss_table_set_f64, ss_table_prepare_f64, ss_table_evaluate_f64, ss_table_pair_f64, ss_table_state_values_f64, ss_table_mirror_state_f64);
-entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_bound_sphere_pairs_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32, ss_table_new_f32, ss_table_free_f32, ss_table_set_f32, ss_table_prepare_f32, ss_table_evaluate_f32, ss_table_pair_f32, ss_table_state_values_f32, ss_table_mirror_state_f32);
+entry_points!(f64: ss_law_new_f64, ss_law_free_f64, ss_sphere_sphere_f64, ss_sphere_wall_f64, ss_bound_law_new_f64, ss_bound_law_free_f64, ss_bound_sphere_sphere_f64, ss_bound_sphere_wall_f64, ss_bound_sphere_pairs_f64, ss_advance_sphere_f64, ss_contact_duration_f64, ss_stability_limit_f64, ss_rejected_parameter_f64, ss_table_new_f64, ss_table_free_f64, ss_table_set_f64, ss_table_prepare_f64, ss_table_evaluate_f64, ss_table_pair_f64, ss_table_state_values_f64, ss_table_mirror_state_f64, ss_table_evaluate_walls_f64);
+entry_points!(f32: ss_law_new_f32, ss_law_free_f32, ss_sphere_sphere_f32, ss_sphere_wall_f32, ss_bound_law_new_f32, ss_bound_law_free_f32, ss_bound_sphere_sphere_f32, ss_bound_sphere_wall_f32, ss_bound_sphere_pairs_f32, ss_advance_sphere_f32, ss_contact_duration_f32, ss_stability_limit_f32, ss_rejected_parameter_f32, ss_table_new_f32, ss_table_free_f32, ss_table_set_f32, ss_table_prepare_f32, ss_table_evaluate_f32, ss_table_pair_f32, ss_table_state_values_f32, ss_table_mirror_state_f32, ss_table_evaluate_walls_f32);

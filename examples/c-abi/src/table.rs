@@ -20,7 +20,7 @@ use crate::{
     SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA, SS_MODEL_HERTZ_AA_LUDING,
     SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, SS_OK,
     SS_PARAMETER_NONE, Stored, contact_code, forces_of, parameter_code, rejected_parameter,
-    ss_forces, ss_sphere,
+    ss_forces, ss_sphere, ss_wall,
 };
 
 /// The most materials a table holds (LAMMPS atom types).
@@ -181,6 +181,31 @@ pub struct ss_loads<F> {
     pub pair_force: *mut F,
 }
 
+/// Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+/// atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
+/// numbers from `states + k * stride + w * wall_stride`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct ss_walls<F> {
+    /// How many walls.
+    pub count: usize,
+    /// The walls.
+    pub walls: *const ss_wall<F>,
+    /// Their material.
+    pub material: u32,
+    /// The atoms' states against the walls.
+    pub states: *mut F,
+    /// Numbers per atom in `states`.
+    pub stride: usize,
+    /// Numbers between one wall's state and the next within an atom's.
+    pub wall_stride: usize,
+    /// Null: every owned atom meets the walls; else owned atom `k` does when
+    /// `selected[k] & bit` is not 0 (LAMMPS: `mask` and a fix's `groupbit`).
+    pub selected: *const i32,
+    /// See `selected`.
+    pub bit: i32,
+}
+
 /// What an evaluation found, and which atoms an error is about.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
@@ -213,6 +238,7 @@ struct Tabled<F: Float, X: Mixing<F>> {
     given: [[Option<X::Properties>; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
     ready: Option<(MaterialTable<X::Law, SS_MATERIALS_MAX>, TimeStep<F>)>,
     work: Workspace<F, <X::Law as Law>::State>,
+    wall_work: WallWork<F, <X::Law as Law>::State>,
 }
 
 /// The memory an evaluation gathers the list into and the kernel writes through.
@@ -226,6 +252,44 @@ struct Workspace<F, S> {
     force: Vec<Vec3<F>>,
     torque: Vec<Vec3<F>>,
     records: Vec<Interaction<F>>,
+}
+
+/// The memory a walls evaluation gathers the selected atoms into.
+#[derive(Debug)]
+struct WallWork<F, S> {
+    index: Vec<usize>,
+    position: Vec<Vec3<F>>,
+    velocity: Vec<Vec3<F>>,
+    spin: Vec<Vec3<F>>,
+    radius: Vec<F>,
+    mass: Vec<F>,
+    material: Vec<u32>,
+    walls: Vec<soft_sphere::MaterialWall<F>>,
+    states: Vec<S>,
+    saved: Vec<S>,
+    loads: Vec<Vec3<F>>,
+    force: Vec<Vec3<F>>,
+    torque: Vec<Vec3<F>>,
+}
+
+impl<F, S> WallWork<F, S> {
+    fn new() -> Self {
+        Self {
+            index: Vec::new(),
+            position: Vec::new(),
+            velocity: Vec::new(),
+            spin: Vec::new(),
+            radius: Vec::new(),
+            mass: Vec::new(),
+            material: Vec::new(),
+            walls: Vec::new(),
+            states: Vec::new(),
+            saved: Vec::new(),
+            loads: Vec::new(),
+            force: Vec::new(),
+            torque: Vec::new(),
+        }
+    }
 }
 
 type Linear<F, T> = LinearMixing<F, T>;
@@ -406,6 +470,7 @@ where
                 torque: Vec::new(),
                 records: Vec::new(),
             },
+            wall_work: WallWork::new(),
         })
     }
 
@@ -785,6 +850,187 @@ where
         SS_OK
     }
 
+    /// The walls entry: the selected owned atoms against every wall, through the seam (no
+    /// pairs); on success the states (when `advance`) and the forces written back.
+    ///
+    /// # Safety
+    /// As `ss_table_evaluate_walls_*`.
+    unsafe fn evaluate_walls(
+        &mut self,
+        atoms: &ss_atoms<F>,
+        walls: &ss_walls<F>,
+        loads: &ss_loads<F>,
+        advance: bool,
+        report: &mut ss_list_report,
+    ) -> i32 {
+        let values = <<X::Law as Law>::State as Stored<F>>::VALUES;
+        let Some((table, step)) = &self.ready else {
+            return SS_ERR_NOT_PREPARED;
+        };
+        let n = atoms.owned;
+        let arrays = [
+            atoms.position.cast::<u8>(),
+            atoms.velocity.cast(),
+            atoms.angular_velocity.cast(),
+            atoms.radius.cast(),
+            atoms.mass.cast(),
+            atoms.types.cast(),
+            loads.force.cast(),
+            loads.torque.cast(),
+        ];
+        if arrays.iter().any(|a| !present(*a, n)) || !present(walls.walls, walls.count) {
+            return SS_ERR_NULL;
+        }
+        if n > atoms.count || n > u32::MAX as usize {
+            return SS_ERR_LENGTH;
+        }
+        let needed = if walls.count == 0 {
+            0
+        } else {
+            (walls.count - 1) * walls.wall_stride + values
+        };
+        if values > 0 && (walls.wall_stride < values || walls.stride < needed) {
+            return SS_ERR_LENGTH;
+        }
+        if values > 0 && walls.count > 0 && !present(walls.states, n) {
+            return SS_ERR_NULL;
+        }
+        if walls.material as usize >= self.materials {
+            return SS_ERR_MATERIAL;
+        }
+        let work = &mut self.wall_work;
+        work.walls.clear();
+        for w in 0..walls.count {
+            // SAFETY: `count` walls (the caller's promise).
+            match crate::plane_of(unsafe { &*walls.walls.add(w) }) {
+                Ok(wall) => work.walls.push(soft_sphere::MaterialWall {
+                    wall,
+                    material: walls.material,
+                }),
+                Err(code) => return code,
+            }
+        }
+        // Gather the selected atoms and their states.
+        for v in [&mut work.position, &mut work.velocity, &mut work.spin] {
+            v.clear();
+        }
+        work.index.clear();
+        work.radius.clear();
+        work.mass.clear();
+        work.material.clear();
+        work.states.clear();
+        let vector = |p: *const F, k: usize| {
+            // SAFETY: three numbers per atom.
+            unsafe { Vec3::new(*p.add(3 * k), *p.add(3 * k + 1), *p.add(3 * k + 2)) }
+        };
+        for k in 0..n {
+            // SAFETY: one flag per atom when given.
+            if !walls.selected.is_null() && unsafe { *walls.selected.add(k) } & walls.bit == 0 {
+                continue;
+            }
+            // SAFETY: one type per atom.
+            let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
+            if t < 0 || t as usize >= self.materials {
+                report.atoms = [k as i64, -1];
+                return SS_ERR_MATERIAL;
+            }
+            work.index.push(k);
+            work.material.push(t as u32);
+            work.position.push(vector(atoms.position, k));
+            work.velocity.push(vector(atoms.velocity, k));
+            work.spin.push(vector(atoms.angular_velocity, k));
+            // SAFETY: one number per atom.
+            unsafe {
+                work.radius.push(*atoms.radius.add(k));
+                work.mass.push(*atoms.mass.add(k));
+            }
+            for w in 0..walls.count {
+                work.states.push(if values > 0 {
+                    // SAFETY: `stride` numbers per atom, checked to hold every wall's state.
+                    Stored::read(unsafe {
+                        std::slice::from_raw_parts(
+                            walls.states.add(k * walls.stride + w * walls.wall_stride),
+                            values,
+                        )
+                    })
+                } else {
+                    Default::default()
+                });
+            }
+        }
+        let m = work.index.len();
+        work.saved.resize(m * walls.count, Default::default());
+        work.loads.resize(2 * m, Vec3::ZERO);
+        work.force.clear();
+        work.force.resize(m, Vec3::ZERO);
+        work.torque.clear();
+        work.torque.resize(m, Vec3::ZERO);
+        let spheres = SphereArrays {
+            position: &work.position,
+            velocity: &work.velocity,
+            angular_velocity: &work.spin,
+            radius: &work.radius,
+            mass: &work.mass,
+            material: &work.material,
+        };
+        let outcome = table.evaluate(
+            *step,
+            &spheres,
+            ContactList {
+                pairs: &[],
+                shifts: &[],
+                pair_states: &mut [],
+                walls: &work.walls,
+                wall_states: &mut work.states,
+            },
+            ListOutput {
+                force: &mut work.force,
+                torque: &mut work.torque,
+                backup: Backup {
+                    states: &mut work.saved,
+                    loads: &mut work.loads,
+                },
+                records: None,
+            },
+        );
+        let stats = match outcome {
+            Ok(stats) => stats,
+            Err(ListError::Wall { sphere, error, .. }) => {
+                report.atoms = [work.index[sphere] as i64, -1];
+                return contact_code(error);
+            }
+            Err(ListError::Sphere { sphere, error }) => {
+                report.atoms = [work.index[sphere] as i64, -1];
+                return contact_code(error);
+            }
+            Err(error) => return list_code(error, &[], report),
+        };
+        report.contacts = stats.wall_contacts;
+        report.sliding = stats.sliding_contacts;
+        for (s, &k) in work.index.iter().enumerate() {
+            if advance && values > 0 {
+                for w in 0..walls.count {
+                    // SAFETY: as the gather.
+                    work.states[s * walls.count + w].write(unsafe {
+                        std::slice::from_raw_parts_mut(
+                            walls.states.add(k * walls.stride + w * walls.wall_stride),
+                            values,
+                        )
+                    });
+                }
+            }
+            for (out, sum) in [(loads.force, work.force[s]), (loads.torque, work.torque[s])] {
+                // SAFETY: three numbers per atom; not overlapping the inputs.
+                unsafe {
+                    *out.add(3 * k) += sum.x;
+                    *out.add(3 * k + 1) += sum.y;
+                    *out.add(3 * k + 2) += sum.z;
+                }
+            }
+        }
+        SS_OK
+    }
+
     /// One pair's contact with the law of its materials, its state read and not written (for a
     /// host's per-pair report, such as LAMMPS's `single()`).
     fn pair(
@@ -1092,6 +1338,43 @@ pub(crate) unsafe fn table_evaluate<F: Float>(
     let code = each_table!(&mut table.table, t => {
         // SAFETY: forwarded contract.
         unsafe { t.evaluate(atoms, list, history, loads, advance != 0, &mut found) }
+    });
+    // SAFETY: null is allowed; the caller promises validity otherwise.
+    if let Some(report) = unsafe { report.as_mut() } {
+        *report = found;
+    }
+    code
+}
+
+/// # Safety
+/// As the exported walls entries.
+pub(crate) unsafe fn table_evaluate_walls<F: Float>(
+    table: *mut ss_table<F>,
+    atoms: *const ss_atoms<F>,
+    walls: *const ss_walls<F>,
+    loads: *const ss_loads<F>,
+    advance: i32,
+    report: *mut ss_list_report,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let (Some(table), Some(atoms), Some(walls), Some(loads)) = (unsafe {
+        (
+            table.as_mut(),
+            atoms.as_ref(),
+            walls.as_ref(),
+            loads.as_ref(),
+        )
+    }) else {
+        return SS_ERR_NULL;
+    };
+    let mut found = ss_list_report {
+        contacts: 0,
+        sliding: 0,
+        atoms: [-1, -1],
+    };
+    let code = each_table!(&mut table.table, t => {
+        // SAFETY: forwarded contract.
+        unsafe { t.evaluate_walls(atoms, walls, loads, advance != 0, &mut found) }
     });
     // SAFETY: null is allowed; the caller promises validity otherwise.
     if let Some(report) = unsafe { report.as_mut() } {

@@ -17,28 +17,36 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), law(nullptr), bound(nullptr), impact_speed(0.0), history(nullptr),
-    advance(true)
+    Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
+    impact_speed(0.0), history(nullptr), advance(true)
 {
   const std::string style = "fix wall/soft/sphere";
-  const int with_impact = narg == 14 && std::strcmp(arg[9], "impact") == 0;
-  if (narg != 12 && !with_impact)
+  if (narg < 12)
     error->all(FLERR,
                "Illegal fix wall/soft/sphere command: expected LAW and five numbers, "
-               "[impact V], xplane|yplane|zplane LO HI");
+               "[rolling mu_r k_r eta_r], [impact V], xplane|yplane|zplane LO HI");
   if (!atom->sphere_flag) error->all(FLERR, "fix wall/soft/sphere requires atom style sphere");
-  const int model = SoftSphere::model(lmp, style, arg[3]);
-  params = SoftSphere::params(lmp, model, SoftSphere::coefficients(lmp, model, &arg[4]));
-  if (with_impact) impact_speed = utils::numeric(FLERR, arg[10], false, lmp);
-  if (SoftSphere::hertz(model) && !with_impact)
+  model = SoftSphere::model(lmp, style, arg[3]);
+  coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
+  int k = 9;
+  while (k < narg - 3) {
+    if (std::strcmp(arg[k], "rolling") == 0 && k + 3 < narg - 3) {
+      SoftSphere::rolling(lmp, coefficients, &arg[k + 1]);
+      rolling = SS_ROLLING_EPSD;
+      k += 4;
+    } else if (std::strcmp(arg[k], "impact") == 0 && k + 1 < narg - 3) {
+      impact_speed = utils::numeric(FLERR, arg[k + 1], false, lmp);
+      k += 2;
+    } else
+      error->all(FLERR, "{}: unknown keyword '{}' (rolling mu_r k_r eta_r, impact V)", style,
+                 arg[k]);
+  }
+  if (SoftSphere::hertz(model) && !(impact_speed > 0.0))
     error->all(FLERR,
                "{}: the Hertz laws check the time step against the fastest impact: give it as "
                "impact V (m/s) after the law's numbers",
                style);
-  params.largest_impact_speed = impact_speed;
-  params.largest_effective_radius = 1.0;
-  arg += 2 * with_impact;
-  const std::string plane = arg[9];
+  const std::string plane = arg[narg - 3];
   if (plane == "xplane")
     axis = 0;
   else if (plane == "yplane")
@@ -48,7 +56,7 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
   else
     error->all(FLERR, "{}: unknown wall '{}' (xplane, yplane or zplane)", style, plane);
   for (int w = 0; w < WALLS; w++) {
-    const char *value = arg[10 + w];
+    const char *value = arg[narg - 2 + w];
     present[w] = std::strcmp(value, "NULL") != 0;
     position[w] = present[w] ? utils::numeric(FLERR, value, false, lmp) : 0.0;
   }
@@ -56,9 +64,9 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
   if (present[0] && present[1] && position[0] >= position[1])
     error->all(FLERR, "{}: LO must lie below HI", style);
 
-  // The kernel checks the law here already (with a placeholder step), so a bad parameter
-  // stops the input script at this command.
-  ss_law_free_f64(SoftSphere::build(lmp, style, params, 1e-300, 1.0));
+  // The kernel checks the law here already, so a bad parameter stops the input script at this
+  // command.
+  ss_table_free_f64(new_table(1.0, 1.0));
 
   force_reneighbor = 0;
   maxexchange = VALUES;
@@ -74,8 +82,7 @@ FixWallSoftSphere::~FixWallSoftSphere()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(history);
-  ss_bound_law_free_f64(bound);
-  ss_law_free_f64(law);
+  ss_table_free_f64(table);
 }
 
 int FixWallSoftSphere::setmask()
@@ -83,17 +90,59 @@ int FixWallSoftSphere::setmask()
   return POST_FORCE;
 }
 
+/* A one-material table (spheres and walls alike) with this fix's law, its coefficients checked
+ * (ERROR naming the rejected one). */
+ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia)
+{
+  const std::string style = "fix wall/soft/sphere";
+  ss_table_config_f64 config;
+  std::memset(&config, 0, sizeof(config));
+  config.model = model;
+  config.materials = 1;
+  config.rolling = rolling;
+  config.smallest_inertia = inertia;
+  config.largest_impact_speed = impact_speed;
+  // A sphere against a wall has its own radius as R*.
+  config.largest_effective_radius = largest_radius;
+  ss_table_f64 *made = nullptr;
+  int code = ss_table_new_f64(&config, &made);
+  if (code == SS_ERR_UNKNOWN_MODEL)
+    error->all(FLERR, "{}: the frictionless laws take no rolling resistance", style);
+  if (code != SS_OK)
+    error->all(FLERR, "{}: {} {}", style,
+               SoftSphere::parameter_name(
+                   code == SS_ERR_NOT_POSITIVE ? SS_PARAMETER_SPEED : SS_PARAMETER_NONE, model),
+               SoftSphere::parameter_error(code));
+  int parameter = SS_PARAMETER_NONE;
+  code = ss_table_set_f64(made, 0, 0, &coefficients, &parameter);
+  if (code != SS_OK) {
+    ss_table_free_f64(made);
+    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(parameter, model),
+               SoftSphere::parameter_error(code));
+  }
+  return made;
+}
+
 void FixWallSoftSphere::init()
 {
-  // A sphere against a wall has its own mass as effective mass, and its radius as R*.
-  params.largest_effective_radius = SoftSphere::largest_radius(lmp);
-  ss_bound_law_free_f64(bound);
-  ss_law_free_f64(law);
-  bound = nullptr;
-  law = nullptr;
-  law = SoftSphere::build(lmp, "fix wall/soft/sphere", params, update->dt,
-                          SoftSphere::smallest_mass(lmp));
-  bound = SoftSphere::bind(lmp, "fix wall/soft/sphere", law);
+  const std::string style = "fix wall/soft/sphere";
+  ss_table_free_f64(table);
+  table = nullptr;
+  table = new_table(SoftSphere::largest_radius(lmp),
+                    rolling > 0 ? SoftSphere::smallest_inertia(lmp) : 1.0);
+  // A sphere against a wall has its own mass as effective mass; the table checks the step at
+  // the pair of two of the lightest (half that), which bounds it.
+  const double lightest = SoftSphere::smallest_mass(lmp);
+  ss_table_report_f64 report;
+  const int code = ss_table_prepare_f64(table, update->dt, &lightest, &report);
+  if (code == SS_ERR_UNSTABLE_TIME_STEP)
+    error->all(FLERR,
+               "{}: the time step {} s is at or past the kernel's stability limit {} s for the "
+               "lightest spheres",
+               style, update->dt, report.limit);
+  if (code != SS_OK)
+    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model),
+               SoftSphere::parameter_error(code));
 }
 
 void FixWallSoftSphere::setup(int)
@@ -111,62 +160,52 @@ void FixWallSoftSphere::post_force(int)
 
 void FixWallSoftSphere::forces()
 {
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  double **f = atom->f, **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int *mask = atom->mask;
-  // One wall at a time, so the bound law checks each wall once per step; each atom still
-  // receives LO's force before HI's.
+  const int nlocal = atom->nlocal;
+  // Every atom is of the table's one material.
+  if ((int) material.size() < nlocal) material.resize(nlocal, 0);
+  ss_wall_f64 walls[WALLS];
+  int count = 0, first = -1;
   for (int w = 0; w < WALLS; w++) {
     if (!present[w]) continue;
-    const double outward = w == 0 ? 1.0 : -1.0;
-    ss_wall_f64 wall;
-    std::memset(&wall, 0, sizeof(wall));
-    (&wall.point.x)[axis] = position[w];
-    (&wall.normal.x)[axis] = outward;
-    for (int i = 0; i < atom->nlocal; i++) {
-      if (!(mask[i] & groupbit)) continue;
-      double *stored = &history[i][STATE * w];
-      // Apart (the kernel's own test: the distance from the plane is at least the radius):
-      // the kernel would reset the stored spring the same way. A position that is not finite
-      // goes on to the kernel, which refuses it.
-      const double distance = outward * (x[i][axis] - position[w]);
-      if (distance >= radius[i] && std::isfinite(distance)) {
-        if (advance)
-          for (int m = 0; m < STATE; m++) stored[m] = 0.0;
-        continue;
-      }
-      ss_sphere_f64 s;
-      s.position = {x[i][0], x[i][1], x[i][2]};
-      s.velocity = {v[i][0], v[i][1], v[i][2]};
-      s.angular_velocity = {omega[i][0], omega[i][1], omega[i][2]};
-      s.radius = radius[i];
-      s.mass = atom->rmass[i];
-      ss_state_f64 state;
-      state.displacement = {stored[0], stored[1], stored[2]};
-      state.spring_force = {stored[3], stored[4], stored[5]};
-      state.contact_radius = stored[6];
-      ss_forces_f64 out;
-      const int code = ss_bound_sphere_wall_f64(bound, &s, &wall, &state, &out);
-      if (code != SS_OK)
-        error->one(FLERR, "fix wall/soft/sphere: atom {} against the wall: {}", atom->tag[i],
-                   SoftSphere::contact_error(code));
-      if (advance) {
-        const double kept[STATE] = {state.displacement.x, state.displacement.y,
-                                    state.displacement.z, state.spring_force.x,
-                                    state.spring_force.y, state.spring_force.z,
-                                    state.contact_radius};
-        for (int m = 0; m < STATE; m++) stored[m] = kept[m];
-      }
-      if (!out.touching) continue;
-      // The C ABI reports what the sphere receives as the force and torque on j.
-      f[i][0] += out.force_on_j.x;
-      f[i][1] += out.force_on_j.y;
-      f[i][2] += out.force_on_j.z;
-      torque[i][0] += out.torque_on_j.x;
-      torque[i][1] += out.torque_on_j.y;
-      torque[i][2] += out.torque_on_j.z;
-    }
+    if (first < 0) first = w;
+    std::memset(&walls[count], 0, sizeof(ss_wall_f64));
+    (&walls[count].point.x)[axis] = position[w];
+    (&walls[count].normal.x)[axis] = w == 0 ? 1.0 : -1.0;
+    count++;
+  }
+  ss_atoms_f64 atoms;
+  atoms.count = (size_t) nlocal;
+  atoms.owned = (size_t) nlocal;
+  atoms.position = nlocal ? atom->x[0] : nullptr;
+  atoms.velocity = nlocal ? atom->v[0] : nullptr;
+  atoms.angular_velocity = nlocal ? atom->omega[0] : nullptr;
+  atoms.radius = atom->radius;
+  atoms.mass = atom->rmass;
+  atoms.types = material.data();
+  atoms.first_type = 0;
+  ss_walls_f64 set;
+  set.count = (size_t) count;
+  set.walls = walls;
+  set.material = 0;
+  // LO's state first, then HI's, in each atom's row.
+  set.states = nlocal ? &history[0][STATE * first] : nullptr;
+  set.stride = VALUES;
+  set.wall_stride = STATE;
+  set.selected = atom->mask;
+  set.bit = groupbit;
+  ss_loads_f64 loads;
+  loads.force = nlocal ? atom->f[0] : nullptr;
+  loads.torque = nlocal ? atom->torque[0] : nullptr;
+  loads.newton = 0;
+  loads.pair_force = nullptr;
+  ss_list_report report;
+  const int code =
+      ss_table_evaluate_walls_f64(table, &atoms, &set, &loads, advance ? 1 : 0, &report);
+  if (code != SS_OK) {
+    if (report.atoms[0] >= 0)
+      error->one(FLERR, "fix wall/soft/sphere: atom {} against the wall: {}",
+                 atom->tag[report.atoms[0]], SoftSphere::contact_error(code));
+    error->one(FLERR, "fix wall/soft/sphere: {}", SoftSphere::contact_error(code));
   }
 }
 

@@ -1,10 +1,13 @@
-/* fix ID GROUP wall/soft/sphere LAW five-numbers [impact V] {x,y,z}plane LO HI: flat walls at
- * LO and HI (either may be NULL) that act on the group's spheres with the soft-sphere kernel's
- * law: a linear law (k_n e k_t eta_ratio mu) or a Hertz-Mindlin law (E nu e eta_ratio mu; the
- * wall is of the same material as the spheres, as LAMMPS's fix wall/gran takes it, and impact V
- * declares the fastest impact the time step is checked for). Each sphere's stored spring
- * against each wall is per-atom state of this fix, so it follows the atom between ranks and
- * into restart files (define the fix again, with the same ID, after read_restart).
+/* fix ID GROUP wall/soft/sphere LAW five-numbers [rolling mu_r k_r eta_r] [impact V]
+ *     {x,y,z}plane LO HI
+ * Flat walls at LO and HI (either may be NULL) that act on the group's spheres with the
+ * soft-sphere kernel's law: a linear law (k_n e k_t eta_ratio mu) or a Hertz-Mindlin law (E nu e
+ * eta_ratio mu; the wall is of the same material as the spheres, as LAMMPS's fix wall/gran takes
+ * it, and impact V declares the fastest impact the time step is checked for), with the
+ * elastic-plastic rolling resistance when asked. The walls go to the kernel's list seam in one
+ * call per step (the C ABI's walls entry). Each sphere's stored spring against each wall is
+ * per-atom state of this fix, so it follows the atom between ranks and into restart files
+ * (define the fix again, with the same ID, after read_restart).
  *
  * Part of the soft-sphere LAMMPS plugin. License: GPL-2.0-or-later (it links LAMMPS). */
 
@@ -13,6 +16,8 @@
 
 #include "fix.h"
 #include "soft_sphere.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -37,19 +42,22 @@ class FixWallSoftSphere : public Fix {
 
  private:
   static constexpr int WALLS = 2;    // LO and HI
-  static constexpr int STATE = 7;    // an ss_state_f64: displacement, spring force, radius
+  static constexpr int STATE = 7;    // the most numbers a law keeps per contact
   static constexpr int VALUES = STATE * WALLS;
-  ss_params_f64 params;
-  ss_law_f64 *law;
-  ss_bound_law_f64 *bound;    // the law bound to the run's step, for this rank's loop
+  int model;                          // SS_MODEL_*
+  int rolling;                        // SS_ROLLING_*
+  ss_coefficients_f64 coefficients;    // the law of a sphere with the wall
+  ss_table_f64 *table;                 // one material: the spheres' and the walls'
   int axis;              // 0, 1, 2 for xplane, yplane, zplane
   int present[WALLS];    // whether LO and HI exist
   double position[WALLS];
   double impact_speed;   // Hertz laws: the declared fastest impact (m/s)
   double **history;      // per atom: the stored state against LO, then HI
+  std::vector<int> material;    // zeros: every atom is of the table's one material
   bool advance;
 
   void forces();
+  ss_table_f64 *new_table(double largest_radius, double inertia);
 };
 
 }    // namespace LAMMPS_NS
