@@ -167,17 +167,24 @@ thermo 20000
 run 20000
 print "RESULT $(v_x:%.9e) $(v_w:%.6e)"
 ROLL
-roll() { # rolling keywords, tilt
-  (cd "$work" && "$lmp" -in roll.in -var plugin "$plugin" -var rolling "$1" -var tilt "$2" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2-)
-}
-held="$(roll "rolling 0.2 1e-6 5e-10" 0.15)"; rolled="$(roll "rolling 0.2 1e-6 5e-10" 0.25)"; free="$(roll "" 0.15)"
-python3 -c "
+# `holds DECK NAME HELD ROLLED`: the deck at tilt HELD with the resistance must stay (x within
+# 2 um, spin below 0.01 rad/s after 20 ms), and roll away (x past 20 um) at ROLLED with it and at
+# HELD without it.
+holds() {
+  local runs=()
+  for case in "rolling 0.2 1e-6 5e-10|$3" "rolling 0.2 1e-6 5e-10|$4" "|$3"; do
+    runs+=("$(cd "$work" && "$lmp" -in "$1" -var plugin "$plugin" -var rolling "${case%|*}" \
+      -var tilt "${case#*|}" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2-)")
+  done
+  python3 -c "
 import sys
 held, rolled, free = [list(map(float, s.split())) for s in sys.argv[1:]]
 sys.exit(0 if abs(held[0]) < 2e-6 and abs(held[1]) < 1e-2 and rolled[0] > 2e-5 and free[0] > 2e-5 else 1)
-" "${held:-nan nan}" "${rolled:-nan nan}" "${free:-nan nan}"
-result "rolling resistance holds a sphere up to its slope (pair style)" $? \
-  "x and spin after 20 ms: tan 0.15 held [$held], tan 0.25 [$rolled], no resistance at 0.15 [$free]"
+" "${runs[0]:-nan nan}" "${runs[1]:-nan nan}" "${runs[2]:-nan nan}"
+  result "rolling resistance holds a sphere up to its slope ($2)" $? \
+    "x and spin after 20 ms: tan $3 held [${runs[0]}], tan $4 [${runs[1]}], no resistance at $3 [${runs[2]}]"
+}
+holds roll.in "pair style" 0.15 0.25
 
 # The same on the floor (fix wall/soft/sphere ... rolling): R* = R against a wall, so it holds
 # while tan(theta) < mu_r = 0.2: at 0.18 it must stay, at 0.22 roll away.
@@ -206,17 +213,7 @@ thermo 20000
 run 20000
 print "RESULT $(v_x:%.9e) $(v_w:%.6e)"
 ROLL
-roll_wall() { # rolling keywords, tilt
-  (cd "$work" && "$lmp" -in rollwall.in -var plugin "$plugin" -var rolling "$1" -var tilt "$2" -log none -echo none 2>&1 | grep '^RESULT' | cut -d' ' -f2-)
-}
-held="$(roll_wall "rolling 0.2 1e-6 5e-10" 0.18)"; rolled="$(roll_wall "rolling 0.2 1e-6 5e-10" 0.22)"; free="$(roll_wall "" 0.18)"
-python3 -c "
-import sys
-held, rolled, free = [list(map(float, s.split())) for s in sys.argv[1:]]
-sys.exit(0 if abs(held[0]) < 2e-6 and abs(held[1]) < 1e-2 and rolled[0] > 2e-5 and free[0] > 2e-5 else 1)
-" "${held:-nan nan}" "${rolled:-nan nan}" "${free:-nan nan}"
-result "rolling resistance holds a sphere up to its slope (wall fix)" $? \
-  "x and spin after 20 ms: tan 0.18 held [$held], tan 0.22 [$rolled], no resistance at 0.18 [$free]"
+holds rollwall.in "wall fix" 0.18 0.22
 
 # 2. The same physics as the native style: a granular gas of 1,000 equal spheres, periodic, no
 # walls (the native gamma_n is per unit mass, so it matches e only for equal masses).

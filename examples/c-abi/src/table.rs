@@ -1330,15 +1330,31 @@ pub(crate) unsafe fn table_evaluate<F: Float>(
     };
     // SAFETY: null is allowed (no history).
     let history = unsafe { history.as_ref() };
+    // SAFETY: forwarded contract.
+    unsafe {
+        reported(report, |found| {
+            each_table!(&mut table.table, t => {
+                // SAFETY: forwarded contract.
+                unsafe { t.evaluate(atoms, list, history, loads, advance != 0, found) }
+            })
+        })
+    }
+}
+
+/// Runs an entry with a fresh report, then hands the report to the caller when it asked.
+///
+/// # Safety
+/// `report` must be valid or null.
+unsafe fn reported(
+    report: *mut ss_list_report,
+    run: impl FnOnce(&mut ss_list_report) -> i32,
+) -> i32 {
     let mut found = ss_list_report {
         contacts: 0,
         sliding: 0,
         atoms: [-1, -1],
     };
-    let code = each_table!(&mut table.table, t => {
-        // SAFETY: forwarded contract.
-        unsafe { t.evaluate(atoms, list, history, loads, advance != 0, &mut found) }
-    });
+    let code = run(&mut found);
     // SAFETY: null is allowed; the caller promises validity otherwise.
     if let Some(report) = unsafe { report.as_mut() } {
         *report = found;
@@ -1367,20 +1383,15 @@ pub(crate) unsafe fn table_evaluate_walls<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    let mut found = ss_list_report {
-        contacts: 0,
-        sliding: 0,
-        atoms: [-1, -1],
-    };
-    let code = each_table!(&mut table.table, t => {
-        // SAFETY: forwarded contract.
-        unsafe { t.evaluate_walls(atoms, walls, loads, advance != 0, &mut found) }
-    });
-    // SAFETY: null is allowed; the caller promises validity otherwise.
-    if let Some(report) = unsafe { report.as_mut() } {
-        *report = found;
+    // SAFETY: forwarded contract.
+    unsafe {
+        reported(report, |found| {
+            each_table!(&mut table.table, t => {
+                // SAFETY: forwarded contract.
+                unsafe { t.evaluate_walls(atoms, walls, loads, advance != 0, found) }
+            })
+        })
     }
-    code
 }
 
 /// # Safety

@@ -332,26 +332,8 @@ impl Host {
                 let (a, b) = (self.types[i] as usize - 1, self.types[j] as usize - 1);
                 let params = reference_params(model, a, b);
                 let mut law = null_mut();
-                let mut state = ss_state::default();
-                let stored = &mut self.history[i][jj * self.values..(jj + 1) * self.values];
-                match stored.len() {
-                    3 => {
-                        state.displacement = ss_vec3 {
-                            x: stored[0],
-                            y: stored[1],
-                            z: stored[2],
-                        }
-                    }
-                    4 => {
-                        state.spring_force = ss_vec3 {
-                            x: stored[0],
-                            y: stored[1],
-                            z: stored[2],
-                        };
-                        state.contact_radius = stored[3];
-                    }
-                    _ => {}
-                }
+                let mut state =
+                    state_of(&self.history[i][jj * self.values..(jj + 1) * self.values]);
                 let mut out = ss_forces::default();
                 // SAFETY: valid pointers.
                 unsafe {
@@ -366,21 +348,10 @@ impl Host {
                     assert_eq!(code, SS_OK);
                     ss_law_free_f64(law);
                 }
-                let stored = &mut self.history[i][jj * self.values..(jj + 1) * self.values];
-                match stored.len() {
-                    3 => stored.copy_from_slice(&[
-                        state.displacement.x,
-                        state.displacement.y,
-                        state.displacement.z,
-                    ]),
-                    4 => stored.copy_from_slice(&[
-                        state.spring_force.x,
-                        state.spring_force.y,
-                        state.spring_force.z,
-                        state.contact_radius,
-                    ]),
-                    _ => {}
-                }
+                store(
+                    &state,
+                    &mut self.history[i][jj * self.values..(jj + 1) * self.values],
+                );
                 // A neighbour touches, for the host's history, when it keeps a state.
                 let stored = &self.history[i][jj * self.values..(jj + 1) * self.values];
                 let keeps = values_of(model) > 0 && stored.iter().any(|x| *x != 0.0);
@@ -412,6 +383,41 @@ impl Host {
             self.torque[k] += torque[k];
         }
         touching
+    }
+}
+
+/// The C ABI state of a contact from its flat history numbers (3: Model AA's displacement; 4:
+/// Mindlin's spring force and contact radius; none for the laws that keep nothing).
+fn state_of(stored: &[f64]) -> ss_state<f64> {
+    let mut state = ss_state::default();
+    match stored.len() {
+        3 => {
+            state.displacement = ss_vec3 {
+                x: stored[0],
+                y: stored[1],
+                z: stored[2],
+            }
+        }
+        4 => {
+            state.spring_force = ss_vec3 {
+                x: stored[0],
+                y: stored[1],
+                z: stored[2],
+            };
+            state.contact_radius = stored[3];
+        }
+        _ => {}
+    }
+    state
+}
+
+/// `state` back into its flat history numbers.
+fn store(state: &ss_state<f64>, stored: &mut [f64]) {
+    let (d, f) = (state.displacement, state.spring_force);
+    match stored.len() {
+        3 => stored.copy_from_slice(&[d.x, d.y, d.z]),
+        4 => stored.copy_from_slice(&[f.x, f.y, f.z, state.contact_radius]),
+        _ => {}
     }
 }
 
@@ -1266,45 +1272,14 @@ fn walls_give_the_single_wall_calls_bits() {
             for (w, wall) in walls.iter().enumerate() {
                 let at = k * stride + w * wall_stride;
                 let stored = &mut expected_states[at..at + values];
-                let mut state = ss_state::default();
-                match values {
-                    3 => {
-                        state.displacement = ss_vec3 {
-                            x: stored[0],
-                            y: stored[1],
-                            z: stored[2],
-                        }
-                    }
-                    4 => {
-                        state.spring_force = ss_vec3 {
-                            x: stored[0],
-                            y: stored[1],
-                            z: stored[2],
-                        };
-                        state.contact_radius = stored[3];
-                    }
-                    _ => {}
-                }
+                let mut state = state_of(stored);
                 let mut out = ss_forces::default();
                 // SAFETY: valid pointers.
                 let code = unsafe {
                     ss_sphere_wall_f64(law, &expected.sphere(k), wall, &mut state, &mut out)
                 };
                 assert_eq!(code, SS_OK);
-                match values {
-                    3 => stored.copy_from_slice(&[
-                        state.displacement.x,
-                        state.displacement.y,
-                        state.displacement.z,
-                    ]),
-                    4 => stored.copy_from_slice(&[
-                        state.spring_force.x,
-                        state.spring_force.y,
-                        state.spring_force.z,
-                        state.contact_radius,
-                    ]),
-                    _ => {}
-                }
+                store(&state, stored);
                 touching += out.touching as usize;
                 if out.touching == 1 {
                     let (f, t) = (out.force_on_j, out.torque_on_j);
