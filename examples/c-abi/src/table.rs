@@ -1330,15 +1330,14 @@ pub(crate) unsafe fn table_evaluate<F: Float>(
     };
     // SAFETY: null is allowed (no history).
     let history = unsafe { history.as_ref() };
-    // SAFETY: forwarded contract.
-    unsafe {
-        reported(report, |found| {
-            each_table!(&mut table.table, t => {
-                // SAFETY: forwarded contract.
-                unsafe { t.evaluate(atoms, list, history, loads, advance != 0, found) }
-            })
+    let run = |found: &mut ss_list_report| {
+        each_table!(&mut table.table, t => {
+            // SAFETY: forwarded contract.
+            unsafe { t.evaluate(atoms, list, history, loads, advance != 0, found) }
         })
-    }
+    };
+    // SAFETY: forwarded contract.
+    unsafe { reported(report, run) }
 }
 
 /// Runs an entry with a fresh report, then hands the report to the caller when it asked.
@@ -1383,15 +1382,14 @@ pub(crate) unsafe fn table_evaluate_walls<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    // SAFETY: forwarded contract.
-    unsafe {
-        reported(report, |found| {
-            each_table!(&mut table.table, t => {
-                // SAFETY: forwarded contract.
-                unsafe { t.evaluate_walls(atoms, walls, loads, advance != 0, found) }
-            })
+    let run = |found: &mut ss_list_report| {
+        each_table!(&mut table.table, t => {
+            // SAFETY: forwarded contract.
+            unsafe { t.evaluate_walls(atoms, walls, loads, advance != 0, found) }
         })
-    }
+    };
+    // SAFETY: forwarded contract.
+    unsafe { reported(report, run) }
 }
 
 /// # Safety
