@@ -1324,3 +1324,45 @@ fn walls_give_the_single_wall_calls_bits() {
         unsafe { ss_table_free_f64(table) };
     }
 }
+
+/// Every family but the frictionless ones takes the rolling resistance, whose spring adds three
+/// numbers to what the family keeps per contact.
+#[test]
+fn rolling_comes_with_every_family_that_has_friction() {
+    for (model, kept) in [
+        (SS_MODEL_STATELESS, Some(3)),
+        (SS_MODEL_AA, Some(6)),
+        (SS_MODEL_AA_LUDING, Some(6)),
+        (SS_MODEL_FRICTIONLESS, None),
+        (SS_MODEL_HERTZ_STATELESS, Some(3)),
+        (SS_MODEL_HERTZ_AA, Some(7)),
+        (SS_MODEL_HERTZ_AA_LUDING, Some(7)),
+        (SS_MODEL_HERTZ_FRICTIONLESS, None),
+    ] {
+        let config = ss_table_config {
+            model,
+            rolling: SS_ROLLING_EPSD,
+            smallest_inertia: 1.0e-12,
+            materials: 1,
+            largest_impact_speed: SPEED,
+            largest_effective_radius: RADIUS,
+        };
+        let mut table = null_mut();
+        // SAFETY: valid pointers throughout.
+        unsafe {
+            let code = ss_table_new_f64(&config, &mut table);
+            match kept {
+                Some(values) => {
+                    assert_eq!(code, SS_OK, "model {model}");
+                    assert_eq!(ss_table_state_values_f64(table), values, "model {model}");
+                    assert_eq!(
+                        ss_table_set_f64(table, 0, 0, &material(1), null_mut()),
+                        SS_OK
+                    );
+                    ss_table_free_f64(table);
+                }
+                None => assert_eq!(code, SS_ERR_UNKNOWN_MODEL, "model {model}"),
+            }
+        }
+    }
+}
