@@ -837,6 +837,20 @@ fn a_mirrored_state_with_the_bodies_swapped_gives_the_reaction() {
         if model == SS_MODEL_HERTZ_AA_LUDING {
             assert_eq!(mirrored[3], state[3], "the contact radius is kept");
         }
+        // Either pointer null: refused, nothing written.
+        let before = mirrored.clone();
+        // SAFETY: null pointers are refused before anything is read.
+        unsafe {
+            assert_eq!(
+                ss_table_mirror_state_f64(table, null(), mirrored.as_mut_ptr()),
+                SS_ERR_NULL
+            );
+            assert_eq!(
+                ss_table_mirror_state_f64(table, state.as_ptr(), null_mut()),
+                SS_ERR_NULL
+            );
+        }
+        assert_eq!(mirrored, before);
         // SAFETY: from ss_table_new_f64.
         unsafe { ss_table_free_f64(table) };
     }
