@@ -1730,7 +1730,8 @@ int32_t ss_table_evaluate_f64(ss_table_f64 *table,
  * `*walls` (all of one material of the table), each contact the same bits as
  * `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
  * from `walls->states`. On success the forces and torques are added into `*loads` (the
- * selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+ * selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
+ * of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
  * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
  * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
  * contact's code. One thread at a time per table.
@@ -2019,7 +2020,8 @@ int32_t ss_table_evaluate_f32(ss_table_f32 *table,
  * `*walls` (all of one material of the table), each contact the same bits as
  * `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
  * from `walls->states`. On success the forces and torques are added into `*loads` (the
- * selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+ * selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
+ * of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
  * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
  * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
  * contact's code. One thread at a time per table.

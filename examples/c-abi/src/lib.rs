@@ -1876,7 +1876,8 @@ macro_rules! entry_points {
         /// `*walls` (all of one material of the table), each contact the same bits as
         /// `ss_sphere_wall_*` with the law of the atom's material and the walls', its state read
         /// from `walls->states`. On success the forces and torques are added into `*loads` (the
-        /// selected atoms only) and, when `advance` is not 0, the states advanced. On any error
+        /// selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
+        /// of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
         /// nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
         /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
         /// contact's code. One thread at a time per table.

@@ -258,6 +258,8 @@ struct Workspace<F, S> {
 #[derive(Debug)]
 struct WallWork<F, S> {
     index: Vec<usize>,
+    /// Selected atoms clear of every wall.
+    clear: Vec<usize>,
     position: Vec<Vec3<F>>,
     velocity: Vec<Vec3<F>>,
     spin: Vec<Vec3<F>>,
@@ -276,6 +278,7 @@ impl<F, S> WallWork<F, S> {
     fn new() -> Self {
         Self {
             index: Vec::new(),
+            clear: Vec::new(),
             position: Vec::new(),
             velocity: Vec::new(),
             spin: Vec::new(),
@@ -915,6 +918,7 @@ where
             v.clear();
         }
         work.index.clear();
+        work.clear.clear();
         work.radius.clear();
         work.mass.clear();
         work.material.clear();
@@ -934,9 +938,22 @@ where
                 report.atoms = [k as i64, -1];
                 return SS_ERR_MATERIAL;
             }
+            // An atom clear of every wall (the kernel's own test: `radius - distance <= 0`) would
+            // only have its states relaxed to zero: that is done after success, without the seam.
+            let position = vector(atoms.position, k);
+            // SAFETY: one number per atom.
+            let radius = unsafe { *atoms.radius.add(k) };
+            let clear = work
+                .walls
+                .iter()
+                .all(|w| radius - w.wall.distance_to(position) <= F::ZERO);
+            if clear {
+                work.clear.push(k);
+                continue;
+            }
             work.index.push(k);
             work.material.push(t as u32);
-            work.position.push(vector(atoms.position, k));
+            work.position.push(position);
             work.velocity.push(vector(atoms.velocity, k));
             work.spin.push(vector(atoms.angular_velocity, k));
             // SAFETY: one number per atom.
@@ -1007,6 +1024,20 @@ where
         };
         report.contacts = stats.wall_contacts;
         report.sliding = stats.sliding_contacts;
+        if advance && values > 0 {
+            for &k in &work.clear {
+                for w in 0..walls.count {
+                    // SAFETY: as the gather.
+                    let kept = unsafe {
+                        std::slice::from_raw_parts_mut(
+                            walls.states.add(k * walls.stride + w * walls.wall_stride),
+                            values,
+                        )
+                    };
+                    kept.fill(F::ZERO);
+                }
+            }
+        }
         for (s, &k) in work.index.iter().enumerate() {
             if advance && values > 0 {
                 for w in 0..walls.count {
