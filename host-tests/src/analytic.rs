@@ -111,3 +111,37 @@ pub fn normal_impulse_magnitude(restitution: f64) -> f64 {
         })
         .sum()
 }
+
+/// Cattaneo & Mindlin's tangential contact under a constant normal load `P`, in the kernel's
+/// `G*` (`k_t = 8 G* a` when stuck): the displacement at which the whole contact slides,
+/// `delta_s = 3 mu P / (16 G* a)`.
+pub fn full_slip_displacement(friction: f64, load: f64, shear_modulus: f64, radius: f64) -> f64 {
+    3.0 * friction * load / (16.0 * shear_modulus * radius)
+}
+
+/// Cattaneo & Mindlin's first loading, `T / (mu P)` at tangential displacement `delta_t`:
+/// the inverse of `delta_t = delta_s (1 - (1 - T / (mu P))^(2/3))`, 1 past `delta_s`.
+pub fn cattaneo_mindlin(displacement: f64, full_slip: f64) -> f64 {
+    let x = (displacement / full_slip).clamp(0.0, 1.0);
+    1.0 - (1.0 - x).powf(1.5)
+}
+
+/// Mindlin & Deresiewicz's unloading from the turning point `(delta*, T*)` of a first loading,
+/// `T / (mu P)` at `delta_t` (Masing's rule: the loading curve, doubled, from the turning point).
+pub fn mindlin_deresiewicz_unloading(
+    displacement: f64,
+    turning_displacement: f64,
+    turning_force: f64,
+    full_slip: f64,
+) -> f64 {
+    turning_force - 2.0 * cattaneo_mindlin((turning_displacement - displacement) / 2.0, full_slip)
+}
+
+/// Energy dissipated per tangential cycle between `+-T*` under a constant normal load, over
+/// `mu P delta_s`: with `tau = T* / (mu P)`,
+/// `(24/5) (1 - (1 - tau)^(5/3)) - 4 tau (1 + (1 - tau)^(2/3))` (Mindlin & Deresiewicz 1953;
+/// Johnson, Contact Mechanics, eq. 7.60, in the kernel's `G*`).
+pub fn cycle_dissipation(amplitude: f64) -> f64 {
+    let rest = 1.0 - amplitude;
+    24.0 / 5.0 * (1.0 - rest.powf(5.0 / 3.0)) - 4.0 * amplitude * (1.0 + rest.powf(2.0 / 3.0))
+}

@@ -11,9 +11,9 @@ use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Law, Material, MindlinAA,
-    MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, Parameter, ParameterError,
-    Sphere, TangentialModel, Vec3, Wall, effective_mass,
+    ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Law, Material, MicroSlip,
+    MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, Parameter,
+    ParameterError, Sphere, TangentialModel, Vec3, Wall, effective_mass,
 };
 
 fn impact(speed: f64, radius: f64) -> HertzImpact<f64> {
@@ -294,7 +294,7 @@ struct Outcome {
 
 fn collide<F: Float, T: TangentialModel<F>>(
     c: &Collision,
-    make: impl Fn(MindlinParameters<F>) -> T,
+    make: impl Fn(MindlinParameters<F>, F) -> T,
     against_wall: bool,
 ) -> Result<Outcome, TestCaseError> {
     let (mut i, mut j) = c.pair::<F>();
@@ -309,8 +309,8 @@ fn collide<F: Float, T: TangentialModel<F>>(
         (effective_mass(i.mass, j.mass).to_f64(), a * b / (a + b))
     };
     let (hertz, p) = hertz_for::<F>(c, m_star, r_star);
-    let law = ContactLaw::new(hertz, make(p));
     let m = F::from_f64(m_star);
+    let law = ContactLaw::new(hertz, make(p, hertz.largest_contact_radius(m)));
     let dt = law
         .time_step(law.recommended_time_step(m), m)
         .expect("stable");
@@ -377,7 +377,7 @@ fn collide<F: Float, T: TangentialModel<F>>(
 
 fn coulomb_and_energy_for<F: Float, T: TangentialModel<F>>(
     name: &str,
-    make: impl Fn(MindlinParameters<F>) -> T + Copy,
+    make: impl Fn(MindlinParameters<F>, F) -> T + Copy,
     c: &Collision,
 ) -> Result<(), TestCaseError> {
     for wall in [false, true] {
@@ -400,14 +400,14 @@ fn coulomb_and_energy_for<F: Float, T: TangentialModel<F>>(
 
 fn swap_negates_for<F: Float, T: TangentialModel<F>>(
     name: &str,
-    make: impl Fn(MindlinParameters<F>) -> T + Copy,
+    make: impl Fn(MindlinParameters<F>, F) -> T + Copy,
     c: &Collision,
 ) -> Result<(), TestCaseError> {
     let (mut i, mut j) = c.pair::<F>();
     let (a, b) = (i.radius.to_f64(), j.radius.to_f64());
     let m_star = effective_mass(i.mass, j.mass);
     let (hertz, p) = hertz_for::<F>(c, m_star.to_f64(), a * b / (a + b));
-    let law = ContactLaw::new(hertz, make(p));
+    let law = ContactLaw::new(hertz, make(p, hertz.largest_contact_radius(m_star)));
     let dt = law
         .time_step(law.recommended_time_step(m_star), m_star)
         .expect("stable");
@@ -433,9 +433,14 @@ fn swap_negates_for<F: Float, T: TangentialModel<F>>(
 
 macro_rules! each_mindlin_law {
     ($property:ident, $F:ty, $c:expr) => {{
-        $property::<$F, _>("mindlin_aa", MindlinAA, $c)?;
-        $property::<$F, _>("mindlin_aa_luding", MindlinAALuding, $c)?;
-        $property::<$F, _>("mindlin_stateless", MindlinStateless, $c)?;
+        $property::<$F, _>("mindlin_aa", |p, _| MindlinAA(p), $c)?;
+        $property::<$F, _>("mindlin_aa_luding", |p, _| MindlinAALuding(p), $c)?;
+        $property::<$F, _>("mindlin_stateless", |p, _| MindlinStateless(p), $c)?;
+        $property::<$F, _>(
+            "micro_slip_8",
+            |p, span| MicroSlip::<$F, 8>::new(p, span).unwrap(),
+            $c,
+        )?;
     }};
 }
 
@@ -457,13 +462,17 @@ proptest! {
     }
 }
 
-fn frame_invariant(c: &Collision, angle: f64) -> Result<(), TestCaseError> {
+fn frame_invariant<T: TangentialModel<f64>>(
+    c: &Collision,
+    angle: f64,
+    make: impl Fn(MindlinParameters<f64>, f64) -> T,
+) -> Result<(), TestCaseError> {
     // Rotating every vector of a collision about z rotates the forces and the stored spring.
     let (i, j) = c.pair::<f64>();
     let (a, b) = (i.radius, j.radius);
-    let (hertz, p) = hertz_for::<f64>(c, effective_mass(i.mass, j.mass), a * b / (a + b));
-    let law = ContactLaw::new(hertz, MindlinAA(p));
     let m = effective_mass(i.mass, j.mass);
+    let (hertz, p) = hertz_for::<f64>(c, m, a * b / (a + b));
+    let law = ContactLaw::new(hertz, make(p, hertz.largest_contact_radius(m)));
     let dt = law
         .time_step(law.recommended_time_step(m), m)
         .expect("stable");
@@ -476,7 +485,7 @@ fn frame_invariant(c: &Collision, angle: f64) -> Result<(), TestCaseError> {
         ..*x
     };
     let (mut i, mut j) = (i, j);
-    let (mut state, mut turned_state) = (MindlinSpring::default(), MindlinSpring::default());
+    let (mut state, mut turned_state) = (T::State::default(), T::State::default());
     // Relative to the largest force so far: near the end of contact the force passes zero.
     let mut scale = f64::MIN_POSITIVE;
     for _ in 0..200_000 {
@@ -516,8 +525,43 @@ fn frame_invariant(c: &Collision, angle: f64) -> Result<(), TestCaseError> {
 proptest! {
     #![proptest_config(config())]
     #[test]
-    fn mindlin_aa_is_frame_invariant(c in collision(), angle in 0.0..std::f64::consts::TAU) {
-        frame_invariant(&c, angle)?;
+    fn mindlin_aa_and_micro_slip_are_frame_invariant(c in collision(), angle in 0.0..std::f64::consts::TAU) {
+        frame_invariant(&c, angle, |p, _| MindlinAA(p))?;
+        frame_invariant(&c, angle, |p, span| MicroSlip::<f64, 8>::new(p, span).unwrap())?;
+    }
+
+    #[test]
+    fn arbitrary_bits_in_a_micro_slip_contact_give_a_value_or_leave_it_alone(bits in proptest::array::uniform32(any::<u64>())) {
+        let x = |k: usize| f64::from_bits(bits[k]);
+        let v = |k: usize| Vec3::new(x(k), x(k + 1), x(k + 2));
+        let largest = HertzImpact { speed: x(0), effective_radius: x(1) };
+        let (Ok(hertz), Ok(p)) = (Hertz::new(x(2), x(3).abs().min(1.0), largest), MindlinParameters::new(x(4), 0.5, x(5))) else {
+            return Ok(());
+        };
+        let Ok(micro) = MicroSlip::<f64, 4>::new(p, x(16).abs()) else { return Ok(()); };
+        let law = ContactLaw::new(hertz, micro);
+        let Ok(dt) = law.time_step(1e-300, 1.0) else { return Ok(()); };
+        let mut i = Sphere::solid(v(6), x(9), 2500.0);
+        i.velocity = v(10);
+        let j = Sphere::solid(v(13), x(14), x(15));
+        let before = soft_sphere::MicroSlipSprings {
+            normal: v(17),
+            contact_radius: x(20),
+            displacements: [v(21), v(24), v(27), Vec3::new(x(30), x(31), x(0))],
+        };
+        let mut state = before;
+        let flat = |s: &soft_sphere::MicroSlipSprings<f64, 4>| {
+            let mut out = vec![s.contact_radius.to_bits()];
+            for u in std::iter::once(&s.normal).chain(s.displacements.iter()) {
+                out.extend(u.to_array().map(f64::to_bits));
+            }
+            out
+        };
+        match law.sphere_sphere(&i, &j, &mut state, dt) {
+            Ok(Interaction::Touching(f)) => prop_assert!(f.force_on_j().is_finite() && f.torque_on_i.is_finite() && soft_sphere::ContactState::is_finite(&state)),
+            Ok(Interaction::Apart) => prop_assert_eq!(state, Default::default()),
+            Err(_) => prop_assert_eq!(flat(&state), flat(&before)),
+        }
     }
 
     #[test]
@@ -563,6 +607,9 @@ fn a_law_over_hertz_is_a_law() {
     let p = MindlinParameters::new(0.4e9, 0.0, 0.3).unwrap();
     assert_eq!(name(&ContactLaw::new(hertz, MindlinAA(p))), 16);
     assert_eq!(name(&ContactLaw::new(hertz, MindlinStateless(p))), 0);
+    // Micro-slip: three floats per spring, plus the normal and the contact radius.
+    let micro = MicroSlip::<f32, 8>::new(p, 1e-4).unwrap();
+    assert_eq!(name(&ContactLaw::new(hertz, micro)), 4 * (3 * 8 + 4));
 }
 
 #[test]

@@ -225,9 +225,9 @@ pub use spheres::{SphereArrays, SphereSlice, Spheres};
 pub use store::{ContactHistory, ContactKey};
 pub use table::{MaterialTable, TableError};
 pub use tangential::{
-    ContactState, Frictionless, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
-    MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, SpringDisplacement,
-    Stateless, TangentialModel, TangentialParameters,
+    ContactState, Frictionless, MicroSlip, MicroSlipSprings, MindlinAA, MindlinAALuding,
+    MindlinParameters, MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB,
+    ModelC, SpringDisplacement, Stateless, TangentialModel, TangentialParameters,
 };
 pub use time_step::TimeStep;
 pub use vector::Vec3;

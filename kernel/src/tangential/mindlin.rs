@@ -73,7 +73,7 @@ impl<F: Float> MindlinParameters<F> {
         self.friction * contact.normal_force.abs()
     }
 
-    fn critical_step(&self, design: &NormalContact<F>, mass: F) -> F {
+    pub(super) fn critical_step(&self, design: &NormalContact<F>, mass: F) -> F {
         let stiffness = self.stiffness(design.contact_radius);
         spring_critical_step(stiffness, self.dashpot(&design.oscillator), mass)
     }

@@ -20,6 +20,7 @@
 //! | [`MindlinStateless`] | `-k_t(a) v_t t_e` | along the trial force | none |
 //! | [`MindlinAA`] | stored force `F_s`, `+= -k_t(a) v_t dt`, times `a / a_prev` when unloading | along the trial force | limited to `mu |F_n|` |
 //! | [`MindlinAALuding`] | as [`MindlinAA`] | along the trial force | `F_t + eta_t v_t` |
+//! | [`MicroSlip`] | a bed of `SPRINGS` cells across the contact, each `8 G* dx` with its own share of `mu |F_n|` (Mindlin & Deresiewicz by Popov & Heß's MDR) | along the trial force | each cell's, limited to its share |
 //!
 //! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = r eta_n` (`r` the dashpot ratio); the contact sticks
 //! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
@@ -27,6 +28,7 @@
 
 mod frictionless;
 mod history;
+mod micro_slip;
 mod mindlin;
 mod model_c;
 mod stateless;
@@ -35,6 +37,7 @@ pub use frictionless::Frictionless;
 pub use history::{
     ModelA, ModelAA, ModelAALuding, ModelB, SpringDisplacement, rotate_into_tangent_plane,
 };
+pub use micro_slip::{MicroSlip, MicroSlipSprings};
 pub use mindlin::{MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless};
 pub use model_c::ModelC;
 pub use stateless::{Stateless, elapsed_contact_time};
