@@ -13,10 +13,10 @@ use host_tests::pairs::{blocks, touching_pairs};
 use soft_sphere::batch::{ContactBlock, LANES};
 use soft_sphere::{
     CheckedSphere, ConstantRolling, ContactLaw, ElasticPlasticRolling, Float, Frictionless, Hertz,
-    HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, Micromath,
-    MindlinAA, MindlinParameters, ModelA, ModelAA, ModelB, ModelC, NormalModel, RollingModel,
-    Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters, TimeStep, Vec3, Wall,
-    effective_mass,
+    HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, MicroSlip,
+    Micromath, MindlinAA, MindlinParameters, ModelA, ModelAA, ModelB, ModelC, NormalModel,
+    RollingModel, Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters,
+    TimeStep, Vec3, Wall, effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -128,6 +128,62 @@ fn laws(c: &mut Criterion) {
     every_law!(c, f64, Libm, "f64_libm");
     every_law!(c, f32, Libm, "f32_libm");
     every_law!(c, f32, Micromath, "f32_micromath");
+}
+
+/// Micro-slip at 4 to 32 springs beside Hertz-Mindlin's single spring and the linear Model AA,
+/// in f64 and f32: the cost side of the spring count (the error side is the validation run's
+/// `chung_ooi_test5_micro_slip_springs` table).
+macro_rules! micro_slip_laws {
+    ($c:expr, $F:ty, $label:expr) => {{
+        let pairs = pairs::<$F>();
+        let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
+        let largest = HertzImpact {
+            speed: 1.0 as $F,
+            effective_radius: 1.0e-3 as $F,
+        };
+        let hertz = Hertz::new(5.0e5 as $F, 0.9 as $F, largest).unwrap();
+        let mindlin = MindlinParameters::new(2.0e5 as $F, 0.5 as $F, 0.5 as $F).unwrap();
+        let span = hertz.largest_contact_radius(m);
+        let with = |name: &str| format!("micro_slip/{name}/{}", $label);
+        bench_law(
+            $c,
+            &with("model_aa"),
+            ContactLaw::new(
+                LinearSpringDashpot::new(1000.0 as $F, 0.9 as $F).unwrap(),
+                ModelAA(TangentialParameters::new(285.7 as $F, 0.5 as $F, 0.5 as $F).unwrap()),
+            ),
+        );
+        bench_law(
+            $c,
+            &with("hertz_mindlin_aa"),
+            ContactLaw::new(hertz, MindlinAA(mindlin)),
+        );
+        bench_law(
+            $c,
+            &with("springs_04"),
+            ContactLaw::new(hertz, MicroSlip::<$F, 4>::new(mindlin, span).unwrap()),
+        );
+        bench_law(
+            $c,
+            &with("springs_08"),
+            ContactLaw::new(hertz, MicroSlip::<$F, 8>::new(mindlin, span).unwrap()),
+        );
+        bench_law(
+            $c,
+            &with("springs_16"),
+            ContactLaw::new(hertz, MicroSlip::<$F, 16>::new(mindlin, span).unwrap()),
+        );
+        bench_law(
+            $c,
+            &with("springs_32"),
+            ContactLaw::new(hertz, MicroSlip::<$F, 32>::new(mindlin, span).unwrap()),
+        );
+    }};
+}
+
+fn micro_slip(c: &mut Criterion) {
+    micro_slip_laws!(c, f64, "f64");
+    micro_slip_laws!(c, f32, "f32");
 }
 
 fn skipping(c: &mut Criterion) {
@@ -305,5 +361,5 @@ fn batches(c: &mut Criterion) {
     bench_blocks::<_, _, { 2 * LANES }>(c, "batch/model_aa/f32_std", law);
 }
 
-criterion_group!(benches, laws, skipping, paths, batches);
+criterion_group!(benches, laws, micro_slip, skipping, paths, batches);
 criterion_main!(benches);

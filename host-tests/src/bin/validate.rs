@@ -298,7 +298,10 @@ fn plot_chung_ooi(out_dir: &Path, oblique: &CaseOutput) -> Result<(), Box<dyn Er
             "chung_ooi_test5",
             "psi",
             &[
-                ("Chung & Ooi (2011) steel", "chung_ooi2011_test5_steel.csv"),
+                (
+                    "Chung & Ooi (2011) steel (a DEM output)",
+                    "chung_ooi2011_test5_steel.csv",
+                ),
                 (
                     "Chung & Ooi (2011) finite elements",
                     "chung_ooi2011_test5_fem.csv",
@@ -352,6 +355,40 @@ fn plot_chung_ooi(out_dir: &Path, oblique: &CaseOutput) -> Result<(), Box<dyn Er
             Axes::Linear,
         )?;
     }
+    // Which spring count to pick: Test 5's distance from the finite elements against the count,
+    // beside the single-spring laws' distances.
+    let springs = oblique.table("chung_ooi_test5_micro_slip_springs");
+    let counts = springs.column("springs");
+    let (low, high) = (counts[0], counts[counts.len() - 1]);
+    let fem = oblique.table("chung_ooi_test5_fem_distances");
+    let mut series = vec![Series::new(
+        "hertz_microslip",
+        xy(springs, "springs", "rms_to_fem"),
+        Mark::Line,
+    )];
+    for row in &fem.rows {
+        if let [Cell::Text(law), Cell::Number(d)] = &row[..] {
+            if law == "hertz_aa" || law == "linear_aa" {
+                series.push(Series::new(
+                    law.clone(),
+                    vec![(low, *d), (high, *d)],
+                    Mark::Theory,
+                ));
+            }
+        }
+    }
+    series.push(Series::new(
+        "the curve's digitisation scatter",
+        vec![(low, 0.065), (high, 0.065)],
+        Mark::Theory,
+    ));
+    chart(
+        &out_dir.join("chung_ooi_test5_micro_slip_springs.svg"),
+        "Chung & Ooi Test 5: RMS distance from the finite-element curve against micro-slip springs",
+        ("springs across the largest contact radius", "RMS distance"),
+        &series,
+        Axes::LogLog,
+    )?;
     Ok(())
 }
 

@@ -178,12 +178,13 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
         let mut share_below = F::ZERO;
         for (i, kept) in next.displacements.iter_mut().enumerate() {
             let covered = self.covered(i, radius);
+            // Cells are in order from the centre: past the contact's edge every one is empty.
+            if covered <= F::ZERO {
+                break;
+            }
             let share_above = pressure_share((self.cell_end(i) * inverse_radius).min_of(F::ONE));
             let share = share_above - share_below;
             share_below = share_above;
-            if covered <= F::ZERO {
-                continue;
-            }
             let old = state.displacements[i];
             let mut u = if keep {
                 old * cosine + axis.cross(old) + axis * (axis.dot(old) * inverse_turned)
