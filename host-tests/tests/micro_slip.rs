@@ -267,8 +267,11 @@ fn a_rotating_contact_turns_its_springs() {
 }
 
 #[test]
-fn bad_spans_are_refused() {
+fn bad_spans_are_refused_and_good_ones_given_back() {
     let p = MindlinParameters::new(SHEAR, 0.0, FRICTION).unwrap();
+    let law = MicroSlip::<f64, 8>::new(p, 3.0e-4).unwrap();
+    assert_eq!(law.largest_contact_radius(), 3.0e-4);
+    assert_eq!(*law.parameters(), p);
     assert_eq!(
         MicroSlip::<f64, 8>::new(p, 0.0),
         Err(ParameterError::NotPositive(Parameter::Radius))

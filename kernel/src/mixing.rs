@@ -1,5 +1,5 @@
 //! Mixing rules: the law of a contact between two materials from each material's properties
-//! (`docs/physics.md`, section 3.4).
+//! (`docs/physics.md`, section 3.5).
 //!
 //! The rules are LAMMPS `pair granular`'s: Hertz's effective moduli `E*` and `G*` from each
 //! body's `E` and `nu` (physics, not a convention), and the geometric mean `sqrt(x_i x_j)` of

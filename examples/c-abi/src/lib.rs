@@ -5,7 +5,8 @@
 //! f64 entry points end in `_f64`, f32 ones in `_f32`. Laws: the stateless law, Model AA, Model
 //! AA with Luding's reset and frictionless contacts over the linear spring-dashpot, and the same
 //! four over Hertz with Mindlin's tangential spring (`SS_MODEL_HERTZ_*`; `ss_effective_moduli_*`
-//! gives their `E*` and `G*` from two materials). The per-contact state
+//! gives their `E*` and `G*` from two materials); the material tables (`ss_table_*`) also take
+//! Hertz with micro-slip (`SS_MODEL_HERTZ_MICROSLIP`). The per-contact state
 //! (`ss_state_*`) is the caller's: zero it for a new contact, keep it while the contact lasts (the
 //! kernel resets it when the pair separates).
 //!
@@ -32,10 +33,10 @@ use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless, Hertz,
-    HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MindlinAA,
-    MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, ModelAA, ModelAALuding,
-    Parameter, ParameterError, RollingSpring, Sphere, SpringDisplacement, Stateless, Std,
-    TangentialParameters, TimeStep, Vec3, Wall,
+    HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MicroSlipSprings,
+    MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, ModelAA,
+    ModelAALuding, Parameter, ParameterError, RollingSpring, Sphere, SpringDisplacement, Stateless,
+    Std, TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -88,6 +89,12 @@ pub const SS_MODEL_HERTZ_STATELESS: i32 = 5;
 pub const SS_MODEL_HERTZ_AA: i32 = 6;
 /// Hertz with Mindlin's stored spring and Luding's reset.
 pub const SS_MODEL_HERTZ_AA_LUDING: i32 = 7;
+/// Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
+/// tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
+/// not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).
+pub const SS_MODEL_HERTZ_MICROSLIP: i32 = 8;
+/// Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.
+pub const SS_MICROSLIP_SPRINGS: usize = 16;
 
 /// No parameter was rejected.
 pub const SS_PARAMETER_NONE: i32 = 0;
@@ -519,20 +526,25 @@ unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
     }
 }
 
-/// How a law's per-contact state sits in the caller's [`ss_state`].
-trait Stored<F: Float>: ContactState {
-    /// Which of `ss_state_arrays`' arrays the batch call needs for this state.
-    const ARRAYS: StateArrays;
-    /// How many numbers the state is when kept flat (a host's per-neighbour history).
+/// How a law's per-contact state is kept flat, as numbers in a host's per-neighbour history
+/// (the list entry's).
+trait Flat<F: Float>: ContactState {
+    /// How many numbers the state is when kept flat.
     const VALUES: usize;
-    fn load(state: &ss_state<F>) -> Self;
-    fn store(&self, state: &mut ss_state<F>);
     /// The state from its `VALUES` flat numbers.
     fn read(values: &[F]) -> Self;
     /// The state into its `VALUES` flat numbers.
     fn write(&self, values: &mut [F]);
     /// The same contact's state seen from the other body (i and j swapped).
     fn mirrored(&self) -> Self;
+}
+
+/// How a law's per-contact state sits in the caller's [`ss_state`] (the single-contact calls').
+trait Stored<F: Float>: Flat<F> {
+    /// Which of `ss_state_arrays`' arrays the batch call needs for this state.
+    const ARRAYS: StateArrays;
+    fn load(state: &ss_state<F>) -> Self;
+    fn store(&self, state: &mut ss_state<F>);
 }
 
 /// The arrays a law's state lives in.
@@ -543,13 +555,41 @@ enum StateArrays {
     Mindlin,
 }
 
-impl<F: Float> Stored<F> for () {
-    const ARRAYS: StateArrays = StateArrays::None;
+/// The normal, the contact radius, then each spring's displacement.
+impl<F: Float, const SPRINGS: usize> Flat<F> for MicroSlipSprings<F, SPRINGS> {
+    const VALUES: usize = 3 * SPRINGS + 4;
+    fn read(values: &[F]) -> Self {
+        let vector = |k: usize| Vec3::new(values[k], values[k + 1], values[k + 2]);
+        let mut springs = MicroSlipSprings {
+            normal: vector(0),
+            contact_radius: values[3],
+            ..Default::default()
+        };
+        for (k, u) in springs.displacements.iter_mut().enumerate() {
+            *u = vector(4 + 3 * k);
+        }
+        springs
+    }
+    fn write(&self, values: &mut [F]) {
+        let n = self.normal;
+        values[..4].copy_from_slice(&[n.x, n.y, n.z, self.contact_radius]);
+        for (k, u) in self.displacements.iter().enumerate() {
+            values[4 + 3 * k..7 + 3 * k].copy_from_slice(&[u.x, u.y, u.z]);
+        }
+    }
+    /// Seen from the other body the normal and every displacement are negated.
+    fn mirrored(&self) -> Self {
+        let mut springs = *self;
+        springs.normal = -self.normal;
+        for u in &mut springs.displacements {
+            *u = -*u;
+        }
+        springs
+    }
+}
+
+impl<F: Float> Flat<F> for () {
     const VALUES: usize = 0;
-    #[inline(always)]
-    fn load(_: &ss_state<F>) -> Self {}
-    #[inline(always)]
-    fn store(&self, _: &mut ss_state<F>) {}
     #[inline(always)]
     fn read(_: &[F]) -> Self {}
     #[inline(always)]
@@ -557,18 +597,15 @@ impl<F: Float> Stored<F> for () {
     fn mirrored(&self) -> Self {}
 }
 
-impl<F: Float> Stored<F> for SpringDisplacement<F> {
-    const ARRAYS: StateArrays = StateArrays::Displacement;
+impl<F: Float> Stored<F> for () {
+    const ARRAYS: StateArrays = StateArrays::None;
     #[inline(always)]
-    fn load(state: &ss_state<F>) -> Self {
-        SpringDisplacement {
-            displacement: state.displacement.into(),
-        }
-    }
+    fn load(_: &ss_state<F>) -> Self {}
     #[inline(always)]
-    fn store(&self, state: &mut ss_state<F>) {
-        state.displacement = self.displacement.into();
-    }
+    fn store(&self, _: &mut ss_state<F>) {}
+}
+
+impl<F: Float> Flat<F> for SpringDisplacement<F> {
     const VALUES: usize = 3;
     #[inline(always)]
     fn read(values: &[F]) -> Self {
@@ -589,20 +626,21 @@ impl<F: Float> Stored<F> for SpringDisplacement<F> {
     }
 }
 
-impl<F: Float> Stored<F> for MindlinSpring<F> {
-    const ARRAYS: StateArrays = StateArrays::Mindlin;
+impl<F: Float> Stored<F> for SpringDisplacement<F> {
+    const ARRAYS: StateArrays = StateArrays::Displacement;
     #[inline(always)]
     fn load(state: &ss_state<F>) -> Self {
-        MindlinSpring {
-            force: state.spring_force.into(),
-            contact_radius: state.contact_radius,
+        SpringDisplacement {
+            displacement: state.displacement.into(),
         }
     }
     #[inline(always)]
     fn store(&self, state: &mut ss_state<F>) {
-        state.spring_force = self.force.into();
-        state.contact_radius = self.contact_radius;
+        state.displacement = self.displacement.into();
     }
+}
+
+impl<F: Float> Flat<F> for MindlinSpring<F> {
     const VALUES: usize = 4;
     #[inline(always)]
     fn read(values: &[F]) -> Self {
@@ -625,20 +663,26 @@ impl<F: Float> Stored<F> for MindlinSpring<F> {
     }
 }
 
-/// The rolling spring beside a tangential state: its torque on i after the tangential numbers
-/// (the list entry's flat history only; the single-contact calls have no rolling).
-impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
-    const ARRAYS: StateArrays = S::ARRAYS;
-    const VALUES: usize = S::VALUES + 3;
+impl<F: Float> Stored<F> for MindlinSpring<F> {
+    const ARRAYS: StateArrays = StateArrays::Mindlin;
+    #[inline(always)]
     fn load(state: &ss_state<F>) -> Self {
-        RollingSpring {
-            tangential: S::load(state),
-            torque: Vec3::ZERO,
+        MindlinSpring {
+            force: state.spring_force.into(),
+            contact_radius: state.contact_radius,
         }
     }
+    #[inline(always)]
     fn store(&self, state: &mut ss_state<F>) {
-        self.tangential.store(state);
+        state.spring_force = self.force.into();
+        state.contact_radius = self.contact_radius;
     }
+}
+
+/// The rolling spring beside a tangential state: its torque on i after the tangential numbers
+/// (the list entry's flat history only; the single-contact calls have no rolling).
+impl<F: Float, S: Flat<F>> Flat<F> for RollingSpring<S, F> {
+    const VALUES: usize = S::VALUES + 3;
     #[inline(always)]
     fn read(values: &[F]) -> Self {
         let (tangential, torque) = values.split_at(S::VALUES);
@@ -660,6 +704,19 @@ impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
             tangential: self.tangential.mirrored(),
             torque: -self.torque,
         }
+    }
+}
+
+impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
+    const ARRAYS: StateArrays = S::ARRAYS;
+    fn load(state: &ss_state<F>) -> Self {
+        RollingSpring {
+            tangential: S::load(state),
+            torque: Vec3::ZERO,
+        }
+    }
+    fn store(&self, state: &mut ss_state<F>) {
+        self.tangential.store(state);
     }
 }
 

@@ -9,18 +9,19 @@
 
 use soft_sphere::{
     Backup, CheckedSphere, ContactLaw, ContactList, ElasticMaterial, ElasticPlasticRolling, Float,
-    Frictionless, HertzImpact, HertzMixing, Interaction, Law, LinearMaterial, LinearMixing,
-    ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend, MindlinAA,
-    MindlinAALuding, MindlinStateless, Mixing, ModelAA, ModelAALuding, NormalModel, ParameterError,
-    Rotation, Sphere, SphereArrays, Stateless, TangentialModel, TimeStep, Vec3,
+    Frictionless, Hertz, HertzImpact, HertzMixing, Interaction, Law, LinearMaterial, LinearMixing,
+    ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend, MicroSlip, MindlinAA,
+    MindlinAALuding, MindlinParameters, MindlinStateless, Mixing, ModelAA, ModelAALuding,
+    NormalModel, ParameterError, Rotation, Sphere, SphereArrays, Stateless, TangentialModel,
+    TimeStep, Vec3,
 };
 
 use crate::{
-    SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_ERR_UNSTABLE_TIME_STEP, SS_MODEL_AA, SS_MODEL_AA_LUDING,
-    SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA, SS_MODEL_HERTZ_AA_LUDING,
-    SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, SS_OK,
-    SS_PARAMETER_NONE, Stored, contact_code, forces_of, parameter_code, rejected_parameter,
-    ss_forces, ss_sphere, ss_wall,
+    Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_ERR_UNSTABLE_TIME_STEP, SS_MICROSLIP_SPRINGS,
+    SS_MODEL_AA, SS_MODEL_AA_LUDING, SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA,
+    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_MICROSLIP,
+    SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, SS_OK, SS_PARAMETER_NONE, contact_code,
+    forces_of, parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
 };
 
 /// The most materials a table holds (LAMMPS atom types).
@@ -61,6 +62,10 @@ pub struct ss_table_config<F> {
     pub largest_impact_speed: F,
     /// `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
     pub largest_effective_radius: F,
+    /// `SS_MODEL_HERTZ_MICROSLIP`: the contact radius its springs span (m), the declared
+    /// impact's for the heaviest pair, `sqrt(R* delta)` at the peak overlap
+    /// `delta = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`; past it the outermost spring widens.
+    pub largest_contact_radius: F,
 }
 
 /// The coefficients of a material, or of one pair of materials' contact. The linear laws read
@@ -363,6 +368,25 @@ fn rolled_elastic<F: Float>(
     })
 }
 
+/// The Hertz-Mindlin mixing rule with micro-slip: [`HertzMixing`]'s Hertz law and Mindlin
+/// parameters, the springs spanning one contact radius for every pair.
+#[derive(Clone, Copy, Debug)]
+struct MicroSlipMixing<F: Float> {
+    largest: HertzImpact<F>,
+    span: F,
+}
+
+impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
+    type Properties = ElasticMaterial<F>;
+    type Law = ContactLaw<F, Hertz<F>, MicroSlip<F, SS_MICROSLIP_SPRINGS>>;
+
+    fn law(&self, i: &Self::Properties, j: &Self::Properties) -> Result<Self::Law, ParameterError> {
+        let mindlin = HertzMixing::new(self.largest, MindlinAA).law(i, j)?;
+        let micro = MicroSlip::new(mindlin.tangential().0, self.span)?;
+        Ok(ContactLaw::new(*mindlin.normal(), micro))
+    }
+}
+
 type RolledLinear<F, T> = Rolled<LinearMixing<F, T>, F>;
 type RolledElastic<F, T> = Rolled<HertzMixing<F, T>, F>;
 
@@ -382,6 +406,8 @@ enum AnyTable<F: Float> {
     RolledHertzStateless(Box<Tabled<F, RolledElastic<F, MindlinStateless<F>>>>),
     RolledHertzAA(Box<Tabled<F, RolledElastic<F, MindlinAA<F>>>>),
     RolledHertzAALuding(Box<Tabled<F, RolledElastic<F, MindlinAALuding<F>>>>),
+    HertzMicroSlip(Box<Tabled<F, MicroSlipMixing<F>>>),
+    RolledHertzMicroSlip(Box<Tabled<F, Rolled<MicroSlipMixing<F>, F>>>),
 }
 
 /// `$body` with `$t` bound to the family's table inside an [`AnyTable`].
@@ -402,6 +428,8 @@ macro_rules! each_table {
             AnyTable::RolledHertzStateless($t) => $body,
             AnyTable::RolledHertzAA($t) => $body,
             AnyTable::RolledHertzAALuding($t) => $body,
+            AnyTable::HertzMicroSlip($t) => $body,
+            AnyTable::RolledHertzMicroSlip($t) => $body,
         }
     };
 }
@@ -449,7 +477,7 @@ fn elastic_frictionless<F: Float>(
 
 impl<F: Float, X: Mixing<F>> Tabled<F, X>
 where
-    <X::Law as Law>::State: Stored<F>,
+    <X::Law as Law>::State: Flat<F>,
 {
     fn new(
         mixing: X,
@@ -653,7 +681,7 @@ unsafe fn check_list<F>(
 
 impl<F: Float, X: Mixing<F>> Tabled<F, X>
 where
-    <X::Law as Law>::State: Stored<F>,
+    <X::Law as Law>::State: Flat<F>,
 {
     /// The list entry: checks, gathers, evaluates through the seam, and on success writes the
     /// states (when `advance`), the touch flags and the forces back.
@@ -669,7 +697,7 @@ where
         advance: bool,
         report: &mut ss_list_report,
     ) -> i32 {
-        let values = <<X::Law as Law>::State as Stored<F>>::VALUES;
+        let values = <<X::Law as Law>::State as Flat<F>>::VALUES;
         let Some((table, step)) = &self.ready else {
             return SS_ERR_NOT_PREPARED;
         };
@@ -745,7 +773,7 @@ where
                 let at = unsafe { *h.first_value.add(i) };
                 for (jj, state) in work.states[run].iter_mut().enumerate() {
                     // SAFETY: as above.
-                    *state = Stored::read(unsafe {
+                    *state = Flat::read(unsafe {
                         std::slice::from_raw_parts(at.add(jj * h.values), values)
                     });
                 }
@@ -866,7 +894,7 @@ where
         advance: bool,
         report: &mut ss_list_report,
     ) -> i32 {
-        let values = <<X::Law as Law>::State as Stored<F>>::VALUES;
+        let values = <<X::Law as Law>::State as Flat<F>>::VALUES;
         let Some((table, step)) = &self.ready else {
             return SS_ERR_NOT_PREPARED;
         };
@@ -964,7 +992,7 @@ where
             for w in 0..walls.count {
                 work.states.push(if values > 0 {
                     // SAFETY: `stride` numbers per atom, checked to hold every wall's state.
-                    Stored::read(unsafe {
+                    Flat::read(unsafe {
                         std::slice::from_raw_parts(
                             walls.states.add(k * walls.stride + w * walls.wall_stride),
                             values,
@@ -1078,7 +1106,7 @@ where
             return SS_ERR_MATERIAL;
         };
         let mut state = match values {
-            Some(values) => Stored::read(values),
+            Some(values) => Flat::read(values),
             None => Default::default(),
         };
         let (i, j): (Sphere<F>, Sphere<F>) = ((*i).into(), (*j).into());
@@ -1136,7 +1164,7 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
         speed: config.largest_impact_speed,
         effective_radius: config.largest_effective_radius,
     };
-    let hertz = (SS_MODEL_HERTZ_FRICTIONLESS..=SS_MODEL_HERTZ_AA_LUDING).contains(&config.model);
+    let hertz = (SS_MODEL_HERTZ_FRICTIONLESS..=SS_MODEL_HERTZ_MICROSLIP).contains(&config.model);
     if hertz {
         // The declared impact is checked by the Hertz law: probe it with a valid material.
         let probe = ElasticMaterial {
@@ -1149,9 +1177,18 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
             .law(&probe, &probe)
             .map_err(parameter_code)?;
     }
+    let micro_slip = MicroSlipMixing {
+        largest: impact,
+        span: config.largest_contact_radius,
+    };
+    if config.model == SS_MODEL_HERTZ_MICROSLIP {
+        let probe = MindlinParameters::new(F::ONE, F::ZERO, F::ZERO).map_err(parameter_code)?;
+        MicroSlip::<F, SS_MICROSLIP_SPRINGS>::new(probe, micro_slip.span)
+            .map_err(parameter_code)?;
+    }
     match config.rolling {
         SS_ROLLING_NONE => {}
-        SS_ROLLING_EPSD => return rolled_table(config, impact),
+        SS_ROLLING_EPSD => return rolled_table(config, impact, micro_slip),
         _ => return Err(SS_ERR_UNKNOWN_MODEL),
     }
     Ok(match config.model {
@@ -1185,6 +1222,7 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
             elastic_frictionless,
             m,
         )),
+        SS_MODEL_HERTZ_MICROSLIP => AnyTable::HertzMicroSlip(Tabled::new(micro_slip, elastic, m)),
         _ => return Err(SS_ERR_UNKNOWN_MODEL),
     })
 }
@@ -1194,6 +1232,7 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
 fn rolled_table<F: Float>(
     config: &ss_table_config<F>,
     impact: HertzImpact<F>,
+    micro_slip: MicroSlipMixing<F>,
 ) -> Result<AnyTable<F>, i32> {
     let (m, smallest_inertia) = (config.materials, config.smallest_inertia);
     ElasticPlasticRolling::new(F::ZERO, F::ONE, F::ZERO, smallest_inertia)
@@ -1242,6 +1281,14 @@ fn rolled_table<F: Float>(
         SS_MODEL_HERTZ_AA_LUDING => AnyTable::RolledHertzAALuding(Tabled::new(
             Rolled {
                 mixing: HertzMixing::new(impact, MindlinAALuding),
+                smallest_inertia,
+            },
+            rolled_elastic,
+            m,
+        )),
+        SS_MODEL_HERTZ_MICROSLIP => AnyTable::RolledHertzMicroSlip(Tabled::new(
+            Rolled {
+                mixing: micro_slip,
                 smallest_inertia,
             },
             rolled_elastic,
@@ -1450,9 +1497,9 @@ fn table_pair_in<F: Float, X: Mixing<F>>(
     out: &mut ss_forces<F>,
 ) -> i32
 where
-    <X::Law as Law>::State: Stored<F>,
+    <X::Law as Law>::State: Flat<F>,
 {
-    let count = <<X::Law as Law>::State as Stored<F>>::VALUES;
+    let count = <<X::Law as Law>::State as Flat<F>>::VALUES;
     let values = if values.is_null() || count == 0 {
         None
     } else {
@@ -1473,9 +1520,9 @@ pub(crate) fn state_values<F: Float>(table: *const ss_table<F>) -> usize {
 
 fn values_of<F: Float, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
 where
-    <X::Law as Law>::State: Stored<F>,
+    <X::Law as Law>::State: Flat<F>,
 {
-    <<X::Law as Law>::State as Stored<F>>::VALUES
+    <<X::Law as Law>::State as Flat<F>>::VALUES
 }
 
 /// # Safety
@@ -1494,9 +1541,9 @@ pub(crate) unsafe fn table_mirror<F: Float>(
 
 fn mirror_in<F: Float, X: Mixing<F>>(_: &Tabled<F, X>, source: *const F, target: *mut F) -> i32
 where
-    <X::Law as Law>::State: Stored<F>,
+    <X::Law as Law>::State: Flat<F>,
 {
-    let count = <<X::Law as Law>::State as Stored<F>>::VALUES;
+    let count = <<X::Law as Law>::State as Flat<F>>::VALUES;
     if count == 0 {
         return SS_OK;
     }
@@ -1506,7 +1553,7 @@ where
     // SAFETY: `count` numbers each (the caller's promise); read fully before writing, so they
     // may be the same.
     let state: <X::Law as Law>::State =
-        Stored::read(unsafe { std::slice::from_raw_parts(source, count) });
+        Flat::read(unsafe { std::slice::from_raw_parts(source, count) });
     state
         .mirrored()
         .write(unsafe { std::slice::from_raw_parts_mut(target, count) });

@@ -1019,11 +1019,74 @@ fn the_f32_list_entry_gives_the_single_calls_bits() {
 /// The elastic-plastic rolling resistance through the list entry: each contact the bits of the
 /// kernel's own law with the rolling slot (`ContactLaw::with_rolling`), its coefficients mixed
 /// by their geometric means, the rolling spring kept after the tangential numbers.
+/// The kernel's own one-contact calls on `host`, pair by pair in list order, for `steps` steps,
+/// each pair's forces summed into the host's arrays as LAMMPS would: the reference a list entry
+/// is held to bit for bit. `contact(i, j, p, q, stored)` evaluates spheres `i` and `j` of
+/// coefficients `p` and `q` (the rough pair's for materials 0 and 2) on their stored values.
+fn kernel_steps(
+    host: &mut Host,
+    steps: usize,
+    mut contact: impl FnMut(
+        &soft_sphere::Sphere<f64>,
+        &soft_sphere::Sphere<f64>,
+        &ss_coefficients<f64>,
+        &ss_coefficients<f64>,
+        &mut [f64],
+    ) -> Option<soft_sphere::ContactForces<f64>>,
+) {
+    use soft_sphere::{Sphere, Vec3};
+    let vector = |a: &[f64], k: usize| Vec3::new(a[3 * k], a[3 * k + 1], a[3 * k + 2]);
+    let (n, values) = (host.radius.len(), host.values);
+    for _ in 0..steps {
+        let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+        for &i in &host.list.clone() {
+            let i = i as usize;
+            for (jj, &j) in host.neighbours[i].clone().iter().enumerate() {
+                let j = j as usize;
+                let (a, b) = (host.types[i] as usize - 1, host.types[j] as usize - 1);
+                let (p, q) = if (a, b) == (0, 2) || (a, b) == (2, 0) {
+                    (rough(), rough())
+                } else {
+                    (material(a), material(b))
+                };
+                let sphere = |k: usize| Sphere {
+                    position: vector(&host.position, k),
+                    velocity: vector(&host.velocity, k),
+                    angular_velocity: vector(&host.spin, k),
+                    radius: host.radius[k],
+                    mass: host.mass[k],
+                };
+                let (si, sj) = (sphere(i), sphere(j));
+                let stored = &mut host.history[i][values * jj..values * (jj + 1)];
+                if let Some(c) = contact(&si, &sj, &p, &q, stored) {
+                    force[i] -= c.force_on_j();
+                    force[j] += c.force_on_j();
+                    torque[i] += c.torque_on_i;
+                    torque[j] += c.torque_on_j;
+                }
+            }
+        }
+        for k in 0..n {
+            for (c, (f, t)) in [
+                (force[k].x, torque[k].x),
+                (force[k].y, torque[k].y),
+                (force[k].z, torque[k].z),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                host.force[3 * k + c] += f;
+                host.torque[3 * k + c] += t;
+            }
+        }
+    }
+}
+
 #[test]
 fn rolling_resistance_gives_the_kernel_laws_bits() {
     use soft_sphere::{
         ContactLaw, ElasticPlasticRolling, Interaction, LinearSpringDashpot, ModelAA,
-        RollingSpring, Sphere, SpringDisplacement, TangentialParameters, Vec3,
+        RollingSpring, SpringDisplacement, TangentialParameters, Vec3,
     };
     let inertia = 1.0e-12;
     let config = ss_table_config {
@@ -1053,91 +1116,52 @@ fn rolling_resistance_gives_the_kernel_laws_bits() {
         assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
     }
     // The reference, pair by pair in list order, three steps.
-    let vector = |a: &[f64], k: usize| Vec3::new(a[3 * k], a[3 * k + 1], a[3 * k + 2]);
     let mean = |x: f64, y: f64| if x == y { x } else { (x * y).sqrt() };
-    let n = host.radius.len();
     let mut rolling_pairs = 0;
-    for _ in 0..3 {
-        let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-        for &i in &expected.list.clone() {
-            let i = i as usize;
-            for (jj, &j) in expected.neighbours[i].clone().iter().enumerate() {
-                let j = j as usize;
-                let (a, b) = (
-                    expected.types[i] as usize - 1,
-                    expected.types[j] as usize - 1,
-                );
-                let (p, q) = if (a, b) == (0, 2) || (a, b) == (2, 0) {
-                    (rough(), rough())
-                } else {
-                    (material(a), material(b))
-                };
-                let law = ContactLaw::new(
-                    LinearSpringDashpot::new(
-                        mean(p.normal_stiffness, q.normal_stiffness),
-                        mean(p.restitution, q.restitution),
-                    )
-                    .unwrap(),
-                    ModelAA(
-                        TangentialParameters::new(
-                            mean(p.tangential_stiffness, q.tangential_stiffness),
-                            mean(p.dashpot_ratio, q.dashpot_ratio),
-                            mean(p.friction, q.friction),
-                        )
-                        .unwrap(),
-                    ),
+    kernel_steps(&mut expected, 3, |i, j, p, q, stored| {
+        let law = ContactLaw::new(
+            LinearSpringDashpot::new(
+                mean(p.normal_stiffness, q.normal_stiffness),
+                mean(p.restitution, q.restitution),
+            )
+            .unwrap(),
+            ModelAA(
+                TangentialParameters::new(
+                    mean(p.tangential_stiffness, q.tangential_stiffness),
+                    mean(p.dashpot_ratio, q.dashpot_ratio),
+                    mean(p.friction, q.friction),
                 )
-                .with_rolling(
-                    ElasticPlasticRolling::new(
-                        mean(p.rolling_friction, q.rolling_friction),
-                        mean(p.rolling_stiffness, q.rolling_stiffness),
-                        mean(p.rolling_damping, q.rolling_damping),
-                        inertia,
-                    )
-                    .unwrap(),
-                );
-                let step = law.time_step(DT, 5.0e-6).unwrap();
-                let stored = &mut expected.history[i][6 * jj..6 * jj + 6];
-                let mut state = RollingSpring {
-                    tangential: SpringDisplacement {
-                        displacement: Vec3::new(stored[0], stored[1], stored[2]),
-                    },
-                    torque: Vec3::new(stored[3], stored[4], stored[5]),
-                };
-                let sphere = |k: usize| Sphere {
-                    position: vector(&expected.position, k),
-                    velocity: vector(&expected.velocity, k),
-                    angular_velocity: vector(&expected.spin, k),
-                    radius: expected.radius[k],
-                    mass: expected.mass[k],
-                };
-                let outcome = law.sphere_sphere(&sphere(i), &sphere(j), &mut state, step);
-                let d = state.tangential.displacement;
-                let t = state.torque;
-                stored.copy_from_slice(&[d.x, d.y, d.z, t.x, t.y, t.z]);
-                if let Interaction::Touching(c) = outcome.unwrap() {
-                    force[i] -= c.force_on_j();
-                    force[j] += c.force_on_j();
-                    torque[i] += c.torque_on_i;
-                    torque[j] += c.torque_on_j;
-                    rolling_pairs += usize::from(t != Vec3::ZERO);
-                }
+                .unwrap(),
+            ),
+        )
+        .with_rolling(
+            ElasticPlasticRolling::new(
+                mean(p.rolling_friction, q.rolling_friction),
+                mean(p.rolling_stiffness, q.rolling_stiffness),
+                mean(p.rolling_damping, q.rolling_damping),
+                inertia,
+            )
+            .unwrap(),
+        );
+        let step = law.time_step(DT, 5.0e-6).unwrap();
+        let mut state = RollingSpring {
+            tangential: SpringDisplacement {
+                displacement: Vec3::new(stored[0], stored[1], stored[2]),
+            },
+            torque: Vec3::new(stored[3], stored[4], stored[5]),
+        };
+        let outcome = law.sphere_sphere(i, j, &mut state, step).unwrap();
+        let d = state.tangential.displacement;
+        let t = state.torque;
+        stored.copy_from_slice(&[d.x, d.y, d.z, t.x, t.y, t.z]);
+        match outcome {
+            Interaction::Touching(c) => {
+                rolling_pairs += usize::from(t != Vec3::ZERO);
+                Some(c)
             }
+            Interaction::Apart => None,
         }
-        for k in 0..n {
-            for (c, (f, t)) in [
-                (force[k].x, torque[k].x),
-                (force[k].y, torque[k].y),
-                (force[k].z, torque[k].z),
-            ]
-            .into_iter()
-            .enumerate()
-            {
-                expected.force[3 * k + c] += f;
-                expected.torque[3 * k + c] += t;
-            }
-        }
-    }
+    });
     assert!(
         rolling_pairs > 40,
         "rolling springs must be at work: {rolling_pairs}"
@@ -1352,6 +1376,7 @@ fn rolling_comes_with_every_family_that_has_friction() {
         (SS_MODEL_HERTZ_AA, Some(7)),
         (SS_MODEL_HERTZ_AA_LUDING, Some(7)),
         (SS_MODEL_HERTZ_FRICTIONLESS, None),
+        (SS_MODEL_HERTZ_MICROSLIP, Some(3 * SS_MICROSLIP_SPRINGS + 7)),
     ] {
         let config = ss_table_config {
             model,
@@ -1360,6 +1385,7 @@ fn rolling_comes_with_every_family_that_has_friction() {
             materials: 1,
             largest_impact_speed: SPEED,
             largest_effective_radius: RADIUS,
+            largest_contact_radius: 1.0e-4,
         };
         let mut table = null_mut();
         // SAFETY: valid pointers throughout.
@@ -1379,4 +1405,124 @@ fn rolling_comes_with_every_family_that_has_friction() {
             }
         }
     }
+}
+
+/// Micro-slip through the list entry: every contact gives the bits of the kernel's own
+/// `MicroSlip` law with the pair's mixed coefficients, its springs kept flat in the history.
+#[test]
+fn micro_slip_gives_the_kernel_laws_bits() {
+    use soft_sphere::{
+        ContactLaw, Hertz, HertzImpact, Interaction, MicroSlip, MicroSlipSprings,
+        MindlinParameters, Vec3,
+    };
+    let span = 0.2e-3;
+    let config = ss_table_config {
+        model: SS_MODEL_HERTZ_MICROSLIP,
+        materials: 3,
+        largest_impact_speed: SPEED,
+        largest_effective_radius: RADIUS,
+        largest_contact_radius: span,
+        ..Default::default()
+    };
+    let mut table = null_mut();
+    let values = 3 * SS_MICROSLIP_SPRINGS + 4;
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        for m in 0..3 {
+            assert_eq!(
+                ss_table_set_f64(table, m, m, &material(m), null_mut()),
+                SS_OK
+            );
+        }
+        assert_eq!(ss_table_set_f64(table, 2, 0, &rough(), null_mut()), SS_OK);
+        assert_eq!(ss_table_state_values_f64(table), values);
+    }
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    let mut host = Host::new(37, values);
+    let mut expected = host.clone();
+    for _ in 0..3 {
+        assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
+    }
+    let mut sheared = 0;
+    kernel_steps(&mut expected, 3, |i, j, p, q, stored| {
+        let params = reference_params(SS_MODEL_HERTZ_AA, 0, 0);
+        let mix = |x: f64, y: f64| if x == y { x } else { (x * y).sqrt() };
+        let (mut e_star, mut g_star) = (0.0, 0.0);
+        let (pm, qm) = (
+            ss_material {
+                youngs_modulus: p.youngs_modulus,
+                poisson_ratio: p.poisson_ratio,
+            },
+            ss_material {
+                youngs_modulus: q.youngs_modulus,
+                poisson_ratio: q.poisson_ratio,
+            },
+        );
+        // SAFETY: valid pointers.
+        assert_eq!(
+            unsafe { ss_effective_moduli_f64(&pm, &qm, &mut e_star, &mut g_star) },
+            SS_OK
+        );
+        let impact = HertzImpact {
+            speed: SPEED,
+            effective_radius: RADIUS,
+        };
+        let hertz = Hertz::new(e_star, mix(p.restitution, q.restitution), impact).unwrap();
+        let mindlin = MindlinParameters::new(
+            g_star,
+            mix(p.dashpot_ratio, q.dashpot_ratio),
+            mix(p.friction, q.friction),
+        )
+        .unwrap();
+        let law = ContactLaw::new(
+            hertz,
+            MicroSlip::<f64, SS_MICROSLIP_SPRINGS>::new(mindlin, span).unwrap(),
+        );
+        let step = law
+            .time_step(params.time_step, params.smallest_effective_mass)
+            .unwrap();
+        let vector = |k: usize| Vec3::new(stored[k], stored[k + 1], stored[k + 2]);
+        let mut state = MicroSlipSprings {
+            normal: vector(0),
+            contact_radius: stored[3],
+            displacements: std::array::from_fn(|k| vector(4 + 3 * k)),
+        };
+        let outcome = law.sphere_sphere(i, j, &mut state, step).unwrap();
+        let n = state.normal;
+        stored[..4].copy_from_slice(&[n.x, n.y, n.z, state.contact_radius]);
+        for (k, u) in state.displacements.iter().enumerate() {
+            stored[4 + 3 * k..7 + 3 * k].copy_from_slice(&[u.x, u.y, u.z]);
+        }
+        match outcome {
+            Interaction::Touching(c) => {
+                sheared += usize::from(c.tangential_force != Vec3::ZERO);
+                Some(c)
+            }
+            Interaction::Apart => None,
+        }
+    });
+    assert!(sheared > 40, "the springs must be at work: {sheared}");
+    assert_eq!(bits(&host.force), bits(&expected.force));
+    assert_eq!(bits(&host.torque), bits(&expected.torque));
+    for (a, b) in host.history.iter().zip(&expected.history) {
+        assert_eq!(bits(a), bits(b));
+    }
+    // A span that is not a positive length is refused when the table is made.
+    for bad in [0.0, -1.0, f64::NAN] {
+        let config = ss_table_config {
+            largest_contact_radius: bad,
+            ..config
+        };
+        let mut other = null_mut();
+        // SAFETY: valid pointers.
+        let code = unsafe { ss_table_new_f64(&config, &mut other) };
+        assert!(
+            code == SS_ERR_NOT_POSITIVE || code == SS_ERR_NON_FINITE_PARAMETER,
+            "{bad}: {code}"
+        );
+        assert!(other.is_null());
+    }
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
 }

@@ -95,7 +95,7 @@ int FixWallSoftSphere::setmask()
 ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia)
 {
   const std::string style = "fix wall/soft/sphere";
-  ss_table_config_f64 config;
+  ss_table_config_f64 config = {};
   std::memset(&config, 0, sizeof(config));
   config.model = model;
   config.materials = 1;

@@ -93,7 +93,7 @@ ss_table_f64 *PairSoftSphere::new_table(int materials, double largest_effective_
                STYLE);
   if (materials > SS_MATERIALS_MAX)
     error->all(FLERR, "{}: at most {} atom types", STYLE, SS_MATERIALS_MAX);
-  ss_table_config_f64 config;
+  ss_table_config_f64 config = {};
   config.model = model;
   config.materials = (size_t) materials;
   config.largest_impact_speed = impact_speed;
