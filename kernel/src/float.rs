@@ -57,6 +57,8 @@ pub trait Float:
     const INFINITY: Self;
     /// The smallest positive normal number.
     const MIN_POSITIVE: Self;
+    /// The distance from 1 to the next larger number (the unit of rounding, twice its bound).
+    const EPSILON: Self;
 
     /// Converts from `f64`, rounding to nearest.
     fn from_f64(value: f64) -> Self;
@@ -66,6 +68,9 @@ pub trait Float:
     fn is_finite(self) -> bool;
     /// Absolute value, by clearing the sign bit.
     fn abs(self) -> Self;
+    /// The bit pattern, widened to 64 bits: equal exactly for the same number (NaNs with the same
+    /// payload included, `0` and `-0` told apart).
+    fn to_bits_u64(self) -> u64;
 
     /// The larger of two numbers. With a NaN operand the comparison fails and `other` is returned;
     /// the kernel only calls it on validated numbers.
@@ -92,6 +97,7 @@ macro_rules! impl_float {
             const PI: Self = core::$t::consts::PI;
             const INFINITY: Self = $t::INFINITY;
             const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
+            const EPSILON: Self = $t::EPSILON;
 
             #[inline(always)]
             fn from_f64(value: f64) -> Self {
@@ -108,6 +114,10 @@ macro_rules! impl_float {
             #[inline(always)]
             fn abs(self) -> Self {
                 $t::from_bits(self.to_bits() & !$sign)
+            }
+            #[inline(always)]
+            fn to_bits_u64(self) -> u64 {
+                u64::from(self.to_bits())
             }
         }
     };

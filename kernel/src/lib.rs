@@ -189,6 +189,7 @@ mod backend;
 pub mod batch;
 mod body;
 mod checked;
+pub mod checks;
 mod engine;
 mod error;
 mod float;

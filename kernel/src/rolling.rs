@@ -223,6 +223,9 @@ impl<S: ContactState, F: Float> ContactState for RollingSpring<S, F> {
     fn is_finite(&self) -> bool {
         self.tangential.is_finite() && self.torque.is_finite()
     }
+    fn same_bits(&self, other: &Self) -> bool {
+        self.tangential.same_bits(&other.tangential) && self.torque.same_bits(other.torque)
+    }
 }
 
 impl<F: Float> RollingModel<F> for ElasticPlasticRolling<F> {

@@ -63,6 +63,13 @@ impl<F: Float> Vec3<F> {
     pub const fn to_array(self) -> [F; 3] {
         [self.x, self.y, self.z]
     }
+
+    /// True when every component has the same bits as `other`'s.
+    pub fn same_bits(self, other: Self) -> bool {
+        self.x.to_bits_u64() == other.x.to_bits_u64()
+            && self.y.to_bits_u64() == other.y.to_bits_u64()
+            && self.z.to_bits_u64() == other.z.to_bits_u64()
+    }
 }
 
 impl<F: Float> From<[F; 3]> for Vec3<F> {

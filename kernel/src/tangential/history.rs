@@ -25,6 +25,9 @@ impl<F: Float> ContactState for SpringDisplacement<F> {
     fn is_finite(&self) -> bool {
         self.displacement.is_finite()
     }
+    fn same_bits(&self, other: &Self) -> bool {
+        self.displacement.same_bits(other.displacement)
+    }
 }
 
 /// Turns a stored displacement into the tangent plane of the current normal `n`: removes its

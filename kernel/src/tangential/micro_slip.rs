@@ -57,6 +57,13 @@ impl<F: Float, const SPRINGS: usize> ContactState for MicroSlipSprings<F, SPRING
             && self.contact_radius.is_finite()
             && self.displacements.iter().all(|u| u.is_finite())
     }
+    fn same_bits(&self, other: &Self) -> bool {
+        self.normal.same_bits(other.normal)
+            && self.contact_radius.to_bits_u64() == other.contact_radius.to_bits_u64()
+            && (self.displacements.iter())
+                .zip(other.displacements.iter())
+                .all(|(a, b)| a.same_bits(*b))
+    }
 }
 
 /// Hertz-Mindlin with micro-slip (Mindlin & Deresiewicz 1953), `SPRINGS` cells across the

@@ -96,6 +96,10 @@ impl<F: Float> ContactState for MindlinSpring<F> {
     fn is_finite(&self) -> bool {
         self.force.is_finite() && self.contact_radius.is_finite()
     }
+    fn same_bits(&self, other: &Self) -> bool {
+        self.force.same_bits(other.force)
+            && self.contact_radius.to_bits_u64() == other.contact_radius.to_bits_u64()
+    }
 }
 
 /// What a stored Mindlin law keeps of its spring after a sliding step.

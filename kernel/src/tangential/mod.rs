@@ -52,6 +52,13 @@ use crate::vector::Vec3;
 pub trait ContactState: Copy + core::fmt::Debug + Default + PartialEq + Send + Sync {
     /// True when every stored number is finite.
     fn is_finite(&self) -> bool;
+
+    /// True when every stored number has the same bits as `other`'s (what "left as it was"
+    /// means after a refused evaluation, NaNs included). Defaults to `==`, which is the same for
+    /// a state without floats.
+    fn same_bits(&self, other: &Self) -> bool {
+        self == other
+    }
 }
 
 impl ContactState for () {
