@@ -100,8 +100,8 @@ fn errors<const N: usize>(span: f64) -> [f64; 3] {
     let full = bed.full_slip();
     let du = full / STEPS as f64;
     // First loading to the displacement where Cattaneo-Mindlin's force is 0.8 mu P.
-    let amplitude = 0.8;
-    let turning = full * (1.0 - (1.0 - amplitude as f64).powf(2.0 / 3.0));
+    let amplitude = 0.8_f64;
+    let turning = full * (1.0 - (1.0 - amplitude).powf(2.0 / 3.0));
     let steps = (turning / du).round() as usize;
     let mut loading = 0.0_f64;
     for _ in 0..steps {

@@ -710,12 +710,15 @@ pub fn test5_micro_slip<const SPRINGS: usize>(psi: f64) -> f64 {
     contact_point_velocity(&after) / (pair.friction * after.velocity.z)
 }
 
+/// One abscissa's outcome of a sweep.
+type Run = fn(f64) -> f64;
+
 /// Test 5's distance from the finite-element curve against the number of micro-slip springs.
 fn micro_slip_springs(fem: &[Vec<f64>]) -> Table {
     let mut table = Table::new(&["springs", "rms_to_fem"]).with_comment(
         "test5: RMS distance of hertz_microslip from the finite-element curve against the number of springs across the declared impact's contact radius",
     );
-    let runs: [(usize, fn(f64) -> f64); 6] = [
+    let runs: [(usize, Run); 6] = [
         (2, test5_micro_slip::<2>),
         (4, test5_micro_slip::<4>),
         (8, test5_micro_slip::<8>),
