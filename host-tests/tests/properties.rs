@@ -832,19 +832,9 @@ fn arbitrary_bits_never_panic<F: Float>(bits: &[u64; 16]) -> Result<(), TestCase
     Ok(())
 }
 
+/// The kernel's arbitrary bit patterns, as f64 bits (each case reads them in its precision).
 fn interesting_bits() -> impl Strategy<Value = u64> {
-    prop_oneof![
-        any::<u64>(),
-        Just(f64::NAN.to_bits()),
-        Just(f64::INFINITY.to_bits()),
-        Just(f64::NEG_INFINITY.to_bits()),
-        Just(0u64),
-        Just((-0.0f64).to_bits()),
-        Just(f64::MIN_POSITIVE.to_bits()),
-        Just(f64::MAX.to_bits()),
-        (-1e3..1e3f64).prop_map(f64::to_bits),
-        (1e-6..1e-1f64).prop_map(f64::to_bits),
-    ]
+    host_tests::strategies::any_bits::<f64>().prop_map(f64::to_bits)
 }
 
 for_both_precisions!(

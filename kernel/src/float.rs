@@ -57,6 +57,8 @@ pub trait Float:
     const INFINITY: Self;
     /// The smallest positive normal number.
     const MIN_POSITIVE: Self;
+    /// The largest finite number.
+    const MAX: Self;
     /// The distance from 1 to the next larger number (the unit of rounding, twice its bound).
     const EPSILON: Self;
 
@@ -71,6 +73,9 @@ pub trait Float:
     /// The bit pattern, widened to 64 bits: equal exactly for the same number (NaNs with the same
     /// payload included, `0` and `-0` told apart).
     fn to_bits_u64(self) -> u64;
+    /// The number whose bit pattern is `bits` (for `f32`, its low 32 bits): arbitrary bit
+    /// patterns for fuzzing.
+    fn from_bits_u64(bits: u64) -> Self;
 
     /// The larger of two numbers. With a NaN operand the comparison fails and `other` is returned;
     /// the kernel only calls it on validated numbers.
@@ -98,6 +103,7 @@ macro_rules! impl_float {
             const INFINITY: Self = $t::INFINITY;
             const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
             const EPSILON: Self = $t::EPSILON;
+            const MAX: Self = $t::MAX;
 
             #[inline(always)]
             fn from_f64(value: f64) -> Self {
@@ -118,6 +124,11 @@ macro_rules! impl_float {
             #[inline(always)]
             fn to_bits_u64(self) -> u64 {
                 u64::from(self.to_bits())
+            }
+            #[inline(always)]
+            fn from_bits_u64(bits: u64) -> Self {
+                // f32: the low half (the cast truncates by design).
+                $t::from_bits(bits as _)
             }
         }
     };

@@ -204,6 +204,8 @@ pub mod rolling;
 mod rotation;
 mod spheres;
 mod store;
+#[cfg(feature = "proptest")]
+pub mod strategies;
 mod table;
 pub mod tangential;
 mod time_step;
