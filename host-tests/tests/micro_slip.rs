@@ -31,6 +31,8 @@ struct Bed<const N: usize> {
     trapezoid: f64,
     /// The last force along x and y (N).
     last: (f64, f64),
+    /// Whether the last step slid.
+    sliding: bool,
 }
 
 impl<const N: usize> Bed<N> {
@@ -46,6 +48,7 @@ impl<const N: usize> Bed<N> {
             work: 0.0,
             trapezoid: 0.0,
             last: (0.0, 0.0),
+            sliding: false,
         }
     }
 
@@ -79,6 +82,7 @@ impl<const N: usize> Bed<N> {
         self.trapezoid -=
             0.5 * ((out.force.x + self.last.0) * step + (out.force.y + self.last.1) * across);
         self.last = (out.force.x, out.force.y);
+        self.sliding = out.sliding;
         let limit = FRICTION * self.load();
         assert!(out.force.norm_squared().sqrt() <= limit * (1.0 + 1e-12));
         -out.force.x / limit
@@ -195,7 +199,8 @@ fn the_stuck_contact_has_mindlins_stiffness_and_slides_at_coulombs_limit_past_it
 fn new_contact_area_is_laid_down_free_and_leaving_area_takes_its_shear() {
     // Shear a small contact, then grow it: the force is unchanged (the new rim is unstressed),
     // though the stuck stiffness grew with the radius.
-    let mut bed = Bed::<32>::new(1e-5, 2.0, 0.0);
+    // The first contact's edge inside a cell (2.1 radii over 32 cells).
+    let mut bed = Bed::<32>::new(1e-5, 2.1, 0.0);
     let du = 0.2 * bed.full_slip() / 100.0;
     for _ in 0..100 {
         bed.push(du, 0.0);
@@ -280,4 +285,85 @@ fn bad_spans_are_refused_and_good_ones_given_back() {
         MicroSlip::<f64, 8>::new(p, f64::NAN),
         Err(ParameterError::NonFinite(Parameter::Radius))
     );
+}
+
+#[test]
+fn a_contact_turning_about_its_shear_keeps_it() {
+    // The normal turns about the displacement's own direction: the smallest rotation leaves the
+    // displacement, and the force, as they were.
+    let mut bed = Bed::<8>::new(1e-5, 1.0, 0.0);
+    bed.push(0.1 * bed.full_slip(), 0.0);
+    let t = bed.push(0.0, 0.0) * FRICTION * bed.load();
+    let (s, c) = 0.4_f64.sin_cos();
+    let input = TangentialInput {
+        normal: Vec3::new(0.0, -s, c),
+        slip_velocity: Vec3::ZERO,
+        normal_force: bed.load(),
+        overlap: bed.overlap,
+        approach_rate: 0.0,
+        oscillator: NormalOscillator::default(),
+        contact_radius: bed.radius(),
+        time_step: 1.0,
+    };
+    let out = bed.law.force::<Libm>(&bed.state, &input);
+    let d = out.force - Vec3::new(-t, 0.0, 0.0);
+    assert!(d.norm_squared().sqrt() < 1e-12 * t, "{:?} vs {t}", out.force);
+}
+
+#[test]
+fn the_dashpot_adds_to_the_springs_and_no_friction_means_no_force() {
+    // One step from first touch, stuck: -k_t v dt - r eta_n v.
+    let p = MindlinParameters::new(SHEAR, 0.5, 10.0).unwrap();
+    let radius = (RADIUS * 1e-5).sqrt();
+    let law = MicroSlip::<f64, 8>::new(p, radius).unwrap();
+    let mut oscillator = NormalOscillator::default();
+    oscillator.damping_coefficient = 3.0;
+    let (v, dt) = (1e-3, 1e-7);
+    let input = TangentialInput {
+        normal: Vec3::new(0.0, 0.0, 1.0),
+        slip_velocity: Vec3::new(v, 0.0, 0.0),
+        normal_force: 4.0 / 3.0 * MODULUS * radius * 1e-5,
+        overlap: 1e-5,
+        approach_rate: 0.0,
+        oscillator,
+        contact_radius: radius,
+        time_step: dt,
+    };
+    let out = law.force::<Libm>(&MicroSlipSprings::default(), &input);
+    let expected = -(8.0 * SHEAR * radius * v * dt) - 0.5 * 3.0 * v;
+    assert!((out.force.x / expected - 1.0).abs() < 1e-12, "{} vs {expected}", out.force.x);
+    assert!(!out.sliding);
+    // Without friction and without slip: no force, no slide, nothing non-finite.
+    let frictionless = MicroSlip::<f64, 8>::new(
+        MindlinParameters::new(SHEAR, 0.0, 0.0).unwrap(),
+        radius,
+    )
+    .unwrap();
+    let still = TangentialInput {
+        slip_velocity: Vec3::ZERO,
+        ..input
+    };
+    let out = frictionless.force::<Libm>(&MicroSlipSprings::default(), &still);
+    assert_eq!(out.force, Vec3::ZERO);
+    assert!(soft_sphere::ContactState::is_finite(&out.state));
+}
+
+#[test]
+fn a_state_is_finite_only_when_every_number_is() {
+    use soft_sphere::ContactState;
+    let good = MicroSlipSprings::<f64, 2> {
+        normal: Vec3::new(0.0, 0.0, 1.0),
+        contact_radius: 1e-4,
+        displacements: [Vec3::new(1e-6, 0.0, 0.0); 2],
+    };
+    assert!(good.is_finite());
+    let mut bad = good;
+    bad.normal.x = f64::NAN;
+    assert!(!bad.is_finite());
+    let mut bad = good;
+    bad.contact_radius = f64::INFINITY;
+    assert!(!bad.is_finite());
+    let mut bad = good;
+    bad.displacements[1].z = f64::NAN;
+    assert!(!bad.is_finite());
 }
