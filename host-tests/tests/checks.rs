@@ -2,7 +2,9 @@
 //! what breaks it, at the tolerance the kernel's own tests use.
 
 use soft_sphere::checks::{self, Violation};
-use soft_sphere::{ContactForces, MindlinSpring, Sphere, SpringDisplacement, Vec3};
+use soft_sphere::{
+    ContactForces, MicroSlipSprings, MindlinSpring, RollingSpring, Sphere, SpringDisplacement, Vec3,
+};
 
 fn forces(normal: f64, tangential: f64) -> ContactForces<f64> {
     ContactForces {
@@ -135,6 +137,50 @@ fn a_state_is_unchanged_only_to_the_bit() {
         Err(Violation::StateChanged)
     );
     assert_eq!(checks::state_unchanged(&(), &()), Ok(()));
+    // Micro-slip springs and a rolling spring: every number counts.
+    let springs = MicroSlipSprings::<f64, 2> {
+        normal: Vec3::new(0.0, 0.0, 1.0),
+        contact_radius: 1e-4,
+        displacements: [Vec3::new(f64::NAN, 1e-6, 0.0), Vec3::new(2e-6, 0.0, 0.0)],
+    };
+    assert_eq!(checks::state_unchanged(&springs, &springs), Ok(()));
+    let mut moved = springs;
+    moved.normal.z = -1.0;
+    assert_eq!(
+        checks::state_unchanged(&springs, &moved),
+        Err(Violation::StateChanged)
+    );
+    let mut moved = springs;
+    moved.contact_radius = 2e-4;
+    assert_eq!(
+        checks::state_unchanged(&springs, &moved),
+        Err(Violation::StateChanged)
+    );
+    for k in 0..2 {
+        let mut moved = springs;
+        moved.displacements[k].y += 1e-9;
+        assert_eq!(
+            checks::state_unchanged(&springs, &moved),
+            Err(Violation::StateChanged)
+        );
+    }
+    let rolled = RollingSpring {
+        tangential: a,
+        torque: Vec3::new(1e-6, 0.0, 0.0),
+    };
+    assert_eq!(checks::state_unchanged(&rolled, &rolled), Ok(()));
+    let mut turned = rolled;
+    turned.torque.x = 2e-6;
+    assert_eq!(
+        checks::state_unchanged(&rolled, &turned),
+        Err(Violation::StateChanged)
+    );
+    let mut turned = rolled;
+    turned.tangential = b;
+    assert_eq!(
+        checks::state_unchanged(&rolled, &turned),
+        Err(Violation::StateChanged)
+    );
 }
 
 #[test]

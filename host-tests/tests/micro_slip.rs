@@ -307,7 +307,11 @@ fn a_contact_turning_about_its_shear_keeps_it() {
     };
     let out = bed.law.force::<Libm>(&bed.state, &input);
     let d = out.force - Vec3::new(-t, 0.0, 0.0);
-    assert!(d.norm_squared().sqrt() < 1e-12 * t, "{:?} vs {t}", out.force);
+    assert!(
+        d.norm_squared().sqrt() < 1e-12 * t,
+        "{:?} vs {t}",
+        out.force
+    );
 }
 
 #[test]
@@ -331,14 +335,15 @@ fn the_dashpot_adds_to_the_springs_and_no_friction_means_no_force() {
     };
     let out = law.force::<Libm>(&MicroSlipSprings::default(), &input);
     let expected = -(8.0 * SHEAR * radius * v * dt) - 0.5 * 3.0 * v;
-    assert!((out.force.x / expected - 1.0).abs() < 1e-12, "{} vs {expected}", out.force.x);
+    assert!(
+        (out.force.x / expected - 1.0).abs() < 1e-12,
+        "{} vs {expected}",
+        out.force.x
+    );
     assert!(!out.sliding);
     // Without friction and without slip: no force, no slide, nothing non-finite.
-    let frictionless = MicroSlip::<f64, 8>::new(
-        MindlinParameters::new(SHEAR, 0.0, 0.0).unwrap(),
-        radius,
-    )
-    .unwrap();
+    let frictionless =
+        MicroSlip::<f64, 8>::new(MindlinParameters::new(SHEAR, 0.0, 0.0).unwrap(), radius).unwrap();
     let still = TangentialInput {
         slip_velocity: Vec3::ZERO,
         ..input

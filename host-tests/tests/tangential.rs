@@ -750,3 +750,46 @@ fn the_elapsed_time_is_read_off_the_normal_oscillator_exactly() {
         }
     }
 }
+
+/// A trial force and a limit both too large to square (the squares overflow to infinity and
+/// compare equal) still slide at the limit, along the trial force.
+#[test]
+fn forces_too_large_to_square_still_meet_coulomb() {
+    use soft_sphere::tangential::TangentialInput;
+    use soft_sphere::{Libm, NormalOscillator, TangentialModel};
+    let law = ModelAA(TangentialParameters::new(1e10_f64, 0.0, 0.3).unwrap());
+    let state = SpringDisplacement {
+        displacement: Vec3::new(1e150, -2e150, 0.0),
+    };
+    let input = TangentialInput {
+        normal: Vec3::new(0.0, 0.0, 1.0),
+        slip_velocity: Vec3::ZERO,
+        normal_force: 1e160,
+        overlap: 1e-6,
+        approach_rate: 0.0,
+        oscillator: NormalOscillator::default(),
+        contact_radius: 0.0,
+        time_step: 1e-6,
+    };
+    let out = law.force::<Libm>(&state, &input);
+    let f = out.force;
+    assert!(out.sliding && f.is_finite(), "{out:?}");
+    // |F_t| = 0.3e160, pointing along the trial force -k_t xi = (-1, 2, 0) 1e160.
+    let scaled = f * 1e-160;
+    let length = scaled.norm_squared().sqrt();
+    assert!((length / 0.3 - 1.0).abs() < 1e-12, "{length}");
+    assert!(
+        (scaled.y / scaled.x + 2.0).abs() < 1e-12 && scaled.x < 0.0,
+        "{f:?}"
+    );
+    // Under a limit larger still (both squares overflow), the trial force stands.
+    let loose = TangentialInput {
+        normal_force: 1e200,
+        ..input
+    };
+    let out = law.force::<Libm>(&state, &loose);
+    assert!(
+        !out.sliding && out.force == Vec3::new(-1e160, 2e160, -0.0),
+        "{out:?}"
+    );
+}

@@ -105,7 +105,13 @@ pub fn coulomb_within<F: Float>(
 ) -> Result<(), Violation> {
     finite(forces)?;
     let t = forces.tangential_force.map_to_f64();
-    let tangential = libm::sqrt(t.norm_squared());
+    // |F_t| without overflow: scaled by its largest component.
+    let largest = t.x.abs().max(t.y.abs()).max(t.z.abs());
+    let tangential = if largest > 0.0 {
+        largest * libm::sqrt((t * (1.0 / largest)).norm_squared())
+    } else {
+        0.0
+    };
     let limit = friction.to_f64() * forces.normal_force.to_f64().abs();
     if tangential <= limit * (1.0 + relative) {
         Ok(())

@@ -193,6 +193,8 @@ pub mod checks;
 mod engine;
 mod error;
 mod float;
+#[cfg(feature = "arbitrary")]
+mod fuzz_inputs;
 mod geometry;
 mod law;
 mod list;

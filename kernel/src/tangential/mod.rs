@@ -254,16 +254,34 @@ pub(crate) fn coulomb<F: Float, M: MathBackend<F>>(
 ) -> (Vec3<F>, bool) {
     let trial_squared = trial.norm_squared();
     if trial_squared <= limit * limit {
-        return (trial, false);
+        if trial_squared < F::INFINITY {
+            return (trial, false);
+        }
+        // Both squares overflowed and compare equal: compare the lengths scaled down by the
+        // trial's largest component instead.
+        let largest = largest_component(trial);
+        let scaled_limit = limit / largest;
+        if (trial * (F::ONE / largest)).norm_squared() <= scaled_limit * scaled_limit {
+            return (trial, false);
+        }
     }
     let direction = match slide {
         Slide::AgainstSlip if slip.norm_squared() >= F::MIN_POSITIVE => -slip,
         _ => trial,
     };
-    (
-        direction * (limit * M::inv_sqrt(direction.norm_squared())),
-        true,
-    )
+    let length_squared = direction.norm_squared();
+    if length_squared < F::INFINITY {
+        return (direction * (limit * M::inv_sqrt(length_squared)), true);
+    }
+    // A direction too long to square: shrink it by its largest component first (a non-finite
+    // one gives a non-finite force, which the evaluation refuses).
+    let shrunk = direction * (F::ONE / largest_component(direction));
+    (shrunk * (limit * M::inv_sqrt(shrunk.norm_squared())), true)
+}
+
+/// The largest magnitude of `v`'s components.
+fn largest_component<F: Float>(v: Vec3<F>) -> F {
+    v.x.abs().max_of(v.y.abs()).max_of(v.z.abs())
 }
 
 /// Stability bound of a tangential spring `stiffness` with dashpot `dashpot` on `mass`.
