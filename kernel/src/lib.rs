@@ -170,6 +170,14 @@
 //! correctly rounded bits as [`Libm`]'s) and a build for the CPU
 //! (`RUSTFLAGS="-C target-cpu=x86-64-v3"`); [`Law::VECTORISES`] says whether it does.
 //!
+//! ## Testing an engine around it
+//!
+//! [`checks`] holds the guarantees above as functions a user's property tests and fuzz targets
+//! call, at the kernel's own tolerances. Two optional features (std, off by default) supply the
+//! inputs: `proptest` adds `soft_sphere::strategies` (collisions, impacts, touching and grazing
+//! pairs, spheres, walls, every slot's parameters, arbitrary bit patterns), `arbitrary` implements `arbitrary::Arbitrary` for the input types (cargo-fuzz,
+//! bolero). `examples/fuzz-engine` fuzzes a small engine of its own with them.
+//!
 //! ## Conventions
 //!
 //! The unit normal `n` points from body i to body j (for a wall: from the sphere into the wall).
