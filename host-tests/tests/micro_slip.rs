@@ -320,8 +320,10 @@ fn the_dashpot_adds_to_the_springs_and_no_friction_means_no_force() {
     let p = MindlinParameters::new(SHEAR, 0.5, 10.0).unwrap();
     let radius = (RADIUS * 1e-5).sqrt();
     let law = MicroSlip::<f64, 8>::new(p, radius).unwrap();
-    let mut oscillator = NormalOscillator::default();
-    oscillator.damping_coefficient = 3.0;
+    let oscillator = NormalOscillator {
+        damping_coefficient: 3.0,
+        ..Default::default()
+    };
     let (v, dt) = (1e-3, 1e-7);
     let input = TangentialInput {
         normal: Vec3::new(0.0, 0.0, 1.0),
