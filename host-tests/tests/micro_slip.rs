@@ -61,19 +61,30 @@ impl<const N: usize> Bed<N> {
         4.0 / 3.0 * MODULUS * self.radius() * self.overlap
     }
 
-    /// Moves the contact by `step` along x (and `across` along y): the tangential force on j
-    /// along x, over `mu P`.
-    fn push(&mut self, step: f64, across: f64) -> f64 {
-        let input = TangentialInput {
-            normal: Vec3::new(0.0, 0.0, 1.0),
-            slip_velocity: Vec3::new(step, across, 0.0),
+    /// What the law sees at the held overlap with normal `normal`, moved by `slip` in one step.
+    fn input(&self, normal: Vec3<f64>, slip: Vec3<f64>) -> TangentialInput<f64> {
+        TangentialInput {
+            normal,
+            slip_velocity: slip,
             normal_force: self.load(),
             overlap: self.overlap,
             approach_rate: 0.0,
             oscillator: NormalOscillator::default(),
             contact_radius: self.radius(),
             time_step: 1.0,
-        };
+        }
+    }
+
+    /// The force on j after the contact turns to `normal` without slipping.
+    fn turned_to(&self, normal: Vec3<f64>) -> Vec3<f64> {
+        let input = self.input(normal, Vec3::ZERO);
+        self.law.force::<Libm>(&self.state, &input).force
+    }
+
+    /// Moves the contact by `step` along x (and `across` along y): the tangential force on j
+    /// along x, over `mu P`.
+    fn push(&mut self, step: f64, across: f64) -> f64 {
+        let input = self.input(Vec3::new(0.0, 0.0, 1.0), Vec3::new(step, across, 0.0));
         let out = self.law.force::<Libm>(&self.state, &input);
         self.state = out.state;
         self.displacement += step;
@@ -251,23 +262,12 @@ fn a_rotating_contact_turns_its_springs() {
     bed.push(0.1 * bed.full_slip(), 0.0);
     let t = bed.push(0.0, 0.0) * FRICTION * bed.load();
     let (s, c) = 0.3_f64.sin_cos();
-    let input = TangentialInput {
-        normal: Vec3::new(s, 0.0, c),
-        slip_velocity: Vec3::ZERO,
-        normal_force: bed.load(),
-        overlap: bed.overlap,
-        approach_rate: 0.0,
-        oscillator: NormalOscillator::default(),
-        contact_radius: bed.radius(),
-        time_step: 1.0,
-    };
-    let out = bed.law.force::<Libm>(&bed.state, &input);
+    let force = bed.turned_to(Vec3::new(s, 0.0, c));
     let expected = Vec3::new(-t * c, 0.0, t * s);
-    let d = out.force - expected;
+    let d = force - expected;
     assert!(
         d.norm_squared().sqrt() < 1e-12 * t,
-        "{:?} vs {expected:?}",
-        out.force
+        "{force:?} vs {expected:?}"
     );
 }
 
@@ -295,23 +295,9 @@ fn a_contact_turning_about_its_shear_keeps_it() {
     bed.push(0.1 * bed.full_slip(), 0.0);
     let t = bed.push(0.0, 0.0) * FRICTION * bed.load();
     let (s, c) = 0.4_f64.sin_cos();
-    let input = TangentialInput {
-        normal: Vec3::new(0.0, -s, c),
-        slip_velocity: Vec3::ZERO,
-        normal_force: bed.load(),
-        overlap: bed.overlap,
-        approach_rate: 0.0,
-        oscillator: NormalOscillator::default(),
-        contact_radius: bed.radius(),
-        time_step: 1.0,
-    };
-    let out = bed.law.force::<Libm>(&bed.state, &input);
-    let d = out.force - Vec3::new(-t, 0.0, 0.0);
-    assert!(
-        d.norm_squared().sqrt() < 1e-12 * t,
-        "{:?} vs {t}",
-        out.force
-    );
+    let force = bed.turned_to(Vec3::new(0.0, -s, c));
+    let d = force - Vec3::new(-t, 0.0, 0.0);
+    assert!(d.norm_squared().sqrt() < 1e-12 * t, "{force:?} vs {t}");
 }
 
 #[test]

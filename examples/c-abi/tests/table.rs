@@ -127,17 +127,21 @@ fn reference_params(model: i32, a: usize, b: usize) -> ss_params<f64> {
 }
 
 fn table(model: i32) -> *mut ss_table<f64> {
-    let config = ss_table_config {
+    table_of(&ss_table_config {
         model,
         materials: 3,
         largest_impact_speed: SPEED,
         largest_effective_radius: RADIUS,
         ..Default::default()
-    };
+    })
+}
+
+/// A table made from `config`, with the three materials and the rough pair set.
+fn table_of(config: &ss_table_config<f64>) -> *mut ss_table<f64> {
     let mut table = null_mut();
     // SAFETY: valid pointers throughout.
     unsafe {
-        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        assert_eq!(ss_table_new_f64(config, &mut table), SS_OK);
         for m in 0..3 {
             assert_eq!(
                 ss_table_set_f64(table, m, m, &material(m), null_mut()),
@@ -1096,19 +1100,9 @@ fn rolling_resistance_gives_the_kernel_laws_bits() {
         materials: 3,
         ..Default::default()
     };
-    let mut table = null_mut();
-    // SAFETY: valid pointers throughout.
-    unsafe {
-        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
-        for m in 0..3 {
-            assert_eq!(
-                ss_table_set_f64(table, m, m, &material(m), null_mut()),
-                SS_OK
-            );
-        }
-        assert_eq!(ss_table_set_f64(table, 2, 0, &rough(), null_mut()), SS_OK);
-        assert_eq!(ss_table_state_values_f64(table), 6);
-    }
+    let table = table_of(&config);
+    // SAFETY: from ss_table_new_f64.
+    assert_eq!(unsafe { ss_table_state_values_f64(table) }, 6);
     assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
     let mut host = Host::new(31, 6);
     let mut expected = host.clone();
@@ -1412,7 +1406,7 @@ fn rolling_comes_with_every_family_that_has_friction() {
 #[test]
 fn micro_slip_gives_the_kernel_laws_bits() {
     use soft_sphere::{
-        ContactLaw, Hertz, HertzImpact, Interaction, MicroSlip, MicroSlipSprings,
+        ContactLaw, Hertz, HertzImpact, Interaction, Material, MicroSlip, MicroSlipSprings,
         MindlinParameters, Vec3,
     };
     let span = 0.2e-3;
@@ -1424,20 +1418,10 @@ fn micro_slip_gives_the_kernel_laws_bits() {
         largest_contact_radius: span,
         ..Default::default()
     };
-    let mut table = null_mut();
     let values = 3 * SS_MICROSLIP_SPRINGS + 4;
-    // SAFETY: valid pointers throughout.
-    unsafe {
-        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
-        for m in 0..3 {
-            assert_eq!(
-                ss_table_set_f64(table, m, m, &material(m), null_mut()),
-                SS_OK
-            );
-        }
-        assert_eq!(ss_table_set_f64(table, 2, 0, &rough(), null_mut()), SS_OK);
-        assert_eq!(ss_table_state_values_f64(table), values);
-    }
+    let table = table_of(&config);
+    // SAFETY: from ss_table_new_f64.
+    assert_eq!(unsafe { ss_table_state_values_f64(table) }, values);
     assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
     let mut host = Host::new(37, values);
     let mut expected = host.clone();
@@ -1448,21 +1432,11 @@ fn micro_slip_gives_the_kernel_laws_bits() {
     kernel_steps(&mut expected, 3, |i, j, p, q, stored| {
         let params = reference_params(SS_MODEL_HERTZ_AA, 0, 0);
         let mix = |x: f64, y: f64| if x == y { x } else { (x * y).sqrt() };
-        let (mut e_star, mut g_star) = (0.0, 0.0);
-        let (pm, qm) = (
-            ss_material {
-                youngs_modulus: p.youngs_modulus,
-                poisson_ratio: p.poisson_ratio,
-            },
-            ss_material {
-                youngs_modulus: q.youngs_modulus,
-                poisson_ratio: q.poisson_ratio,
-            },
-        );
-        // SAFETY: valid pointers.
-        assert_eq!(
-            unsafe { ss_effective_moduli_f64(&pm, &qm, &mut e_star, &mut g_star) },
-            SS_OK
+        let elastic =
+            |c: &ss_coefficients<f64>| Material::new(c.youngs_modulus, c.poisson_ratio).unwrap();
+        let (e_star, g_star) = (
+            elastic(p).effective_modulus(&elastic(q)),
+            elastic(p).effective_shear_modulus(&elastic(q)),
         );
         let impact = HertzImpact {
             speed: SPEED,
