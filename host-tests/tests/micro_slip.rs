@@ -197,12 +197,21 @@ fn the_stuck_contact_has_mindlins_stiffness_and_slides_at_coulombs_limit_past_it
             (t / mindlin - 1.0).abs() < 1e-12,
             "span {span}: {t} vs {mindlin}"
         );
+        assert!(!bed.sliding, "span {span}");
+        // What it holds is Mindlin's spring's energy, k_t u^2 / 2.
+        let held = bed.law.stored_energy(&bed.state);
+        let spring = 0.5 * 8.0 * SHEAR * bed.radius() * du * du;
+        assert!(
+            (held / spring - 1.0).abs() < 1e-12,
+            "span {span}: {held} vs {spring}"
+        );
         for _ in 0..3000 {
             bed.push(du, 0.0);
         }
         // Past the full-slip displacement the contact slides at mu P exactly.
         let t = bed.push(du, 0.0);
         assert!((t - 1.0).abs() < 1e-12, "span {span}: {t}");
+        assert!(bed.sliding, "span {span}");
     }
 }
 
