@@ -23,6 +23,14 @@ fn forces(normal: f64, tangential: f64) -> ContactForces<f64> {
 fn coulomb_passes_the_limit_to_its_rounding_and_refuses_beyond() {
     let mu = 0.3;
     assert_eq!(checks::coulomb(&forces(10.0, 3.0), mu), Ok(()));
+    assert_eq!(checks::coulomb(&forces(10.0, 0.0), mu), Ok(()));
+    // A force along two axes: |(2.4, 3.2, 0)| = 4 > 3.
+    let mut skew = forces(10.0, 2.4);
+    skew.tangential_force.y = 3.2;
+    assert!(matches!(
+        checks::coulomb(&skew, mu),
+        Err(Violation::Coulomb { tangential, .. }) if (tangential - 4.0).abs() < 1e-12
+    ));
     assert_eq!(checks::coulomb(&forces(-10.0, -3.0), mu), Ok(()));
     // 64 units of rounding above the limit pass, 128 do not.
     let limit = 3.0_f64;
