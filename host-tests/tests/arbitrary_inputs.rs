@@ -147,3 +147,32 @@ fn arbitrary_walls_and_laws_are_valid_or_skipped() {
     }
     assert!(walls > 100 && laws > 100, "{walls} {laws}");
 }
+
+/// The states take the fuzzer's bytes field by field, in declaration order, so a target can aim
+/// at any stored number.
+#[test]
+fn states_are_read_field_by_field() {
+    use soft_sphere::{MindlinSpring, RollingSpring, Vec3};
+    let values: Vec<f64> = (1..=16).map(|k| k as f64 * 0.5).collect();
+    let bytes: Vec<u8> = values.iter().flat_map(|x| x.to_le_bytes()).collect();
+    let read = |k: usize| Vec3::new(values[k], values[k + 1], values[k + 2]);
+    let mut u = Unstructured::new(&bytes);
+    let s = SpringDisplacement::<f64>::arbitrary(&mut u).unwrap();
+    assert_eq!(s.displacement, read(0));
+    let mut u = Unstructured::new(&bytes);
+    let m = MindlinSpring::<f64>::arbitrary(&mut u).unwrap();
+    assert_eq!((m.force, m.contact_radius), (read(0), values[3]));
+    let mut u = Unstructured::new(&bytes);
+    let springs = MicroSlipSprings::<f64, 2>::arbitrary(&mut u).unwrap();
+    assert_eq!(
+        (springs.normal, springs.contact_radius),
+        (read(0), values[3])
+    );
+    assert_eq!(springs.displacements, [read(4), read(7)]);
+    let mut u = Unstructured::new(&bytes);
+    let rolled = RollingSpring::<SpringDisplacement<f64>, f64>::arbitrary(&mut u).unwrap();
+    assert_eq!(
+        (rolled.tangential.displacement, rolled.torque),
+        (read(0), read(3))
+    );
+}
