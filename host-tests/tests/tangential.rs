@@ -792,4 +792,12 @@ fn forces_too_large_to_square_still_meet_coulomb() {
         !out.sliding && out.force == Vec3::new(-1e160, 2e160, -0.0),
         "{out:?}"
     );
+    // A limit just below |F*| = 2.236e160 (2.1e160, its square overflowing too) slides.
+    let close = TangentialInput {
+        normal_force: 7e160,
+        ..input
+    };
+    let out = law.force::<Libm>(&state, &close);
+    let length = (out.force * 1e-160).norm_squared().sqrt();
+    assert!(out.sliding && (length / 2.1 - 1.0).abs() < 1e-12, "{out:?}");
 }
