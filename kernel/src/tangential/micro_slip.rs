@@ -171,8 +171,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
         let keep = turned > F::MIN_POSITIVE;
         let inverse_turned = if keep { F::ONE / turned } else { F::ZERO };
 
-        let limit = self.parameters.friction() * contact.normal_force.abs();
-        let stiffness = F::from_f64(8.0) * self.parameters.shear_modulus();
+        let limit = self.parameters.limit(contact);
         let step = contact.slip_velocity * contact.time_step;
         let inverse_radius = F::ONE / radius;
 
@@ -205,7 +204,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
                 u = u * (was / covered);
             }
             u += step;
-            let mut force = u * -(stiffness * covered);
+            let mut force = u * -self.parameters.stiffness(covered);
             let cell_limit = limit * share;
             let force_squared = force.norm_squared();
             if force_squared > cell_limit * cell_limit {
@@ -218,8 +217,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
             *kept = u;
             spring_force += force;
         }
-        let dashpot = contact.slip_velocity
-            * (self.parameters.dashpot_ratio() * contact.oscillator.damping_coefficient);
+        let dashpot = contact.slip_velocity * self.parameters.dashpot(&contact.oscillator);
         let (force, capped) = coulomb::<F, M>(
             spring_force - dashpot,
             contact.slip_velocity,
@@ -235,13 +233,16 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
 
     /// `sum 8 G* L |u|^2 / 2` over the cells, at the state's contact radius.
     fn stored_energy(&self, state: &Self::State) -> F {
-        let stiffness = F::from_f64(8.0) * self.parameters.shear_modulus();
         state
             .displacements
             .iter()
             .enumerate()
             .fold(F::ZERO, |sum, (i, u)| {
-                sum + stiffness * self.covered(i, state.contact_radius) * u.norm_squared() * F::HALF
+                sum + self
+                    .parameters
+                    .stiffness(self.covered(i, state.contact_radius))
+                    * u.norm_squared()
+                    * F::HALF
             })
     }
 

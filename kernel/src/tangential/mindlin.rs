@@ -64,12 +64,12 @@ impl<F: Float> MindlinParameters<F> {
     }
 
     #[inline(always)]
-    fn dashpot(&self, oscillator: &NormalOscillator<F>) -> F {
+    pub(super) fn dashpot(&self, oscillator: &NormalOscillator<F>) -> F {
         self.dashpot_ratio * oscillator.damping_coefficient
     }
 
     #[inline(always)]
-    fn limit(&self, contact: &TangentialInput<F>) -> F {
+    pub(super) fn limit(&self, contact: &TangentialInput<F>) -> F {
         self.friction * contact.normal_force.abs()
     }
 
