@@ -310,7 +310,7 @@ fn select<T>(condition: bool, a: T, b: T) -> T {
 /// Evaluates a block; see [`BoundLaw::sphere_pairs`].
 #[inline(always)]
 pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
-    bound: &mut BoundLaw<'_, ContactLaw<F, Nm, T, M, R, Ro>>,
+    bound: &mut BoundLaw<ContactLaw<F, Nm, T, M, R, Ro>>,
     block: &PairBlock<F, N>,
     states: &mut [Ro::State<T::State>; N],
     out: &mut ContactBlock<F, N>,
@@ -322,7 +322,6 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
     R: Rotation,
     Ro: RollingModel<F>,
 {
-    let (law, time_step) = (bound.law(), bound.time_step());
     let untouched = ContactForces {
         normal: Vec3::ZERO,
         overlap: F::ZERO,
@@ -349,6 +348,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
         }
         return;
     }
+    let (law, time_step) = (bound.law, bound.time_step);
     // Local copies: the lanes then live in registers, with no aliasing between the ~35 streams.
     let pairs = *block;
     let mut kept = *states;
@@ -401,7 +401,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
     bound.count_unstable(unstable);
 }
 
-impl<L: Law> BoundLaw<'_, L> {
+impl<L: Law> BoundLaw<L> {
     /// Evaluates `N` sphere-sphere contacts, lane `k` of `block` with `states[k]`, into `out`:
     /// for every lane the same bits, the same state handling and the same error as
     /// [`ContactLaw::sphere_sphere`] (which [`BoundLaw::sphere_sphere`] equals) on that pair.

@@ -90,8 +90,8 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     ) -> Self::Float;
 
     /// The law bound to a checked time step; see [`ContactLaw::at`](crate::ContactLaw::at).
-    fn at(&self, time_step: TimeStep<Self::Float>) -> BoundLaw<'_, Self> {
-        BoundLaw::new(self, time_step)
+    fn at(&self, time_step: TimeStep<Self::Float>) -> BoundLaw<Self> {
+        BoundLaw::new(*self, time_step)
     }
 
     /// What [`BoundLaw::sphere_sphere`] calls.
@@ -99,7 +99,7 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// # Errors
     /// As [`BoundLaw::sphere_sphere`].
     fn evaluate_pair(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         i: &CheckedSphere<Self::Float>,
         j: &CheckedSphere<Self::Float>,
         state: &mut Self::State,
@@ -107,7 +107,7 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
 
     /// What [`BoundLaw::sphere_pairs`] calls.
     fn evaluate_pairs<const N: usize>(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         block: &PairBlock<Self::Float, N>,
         states: &mut [Self::State; N],
         out: &mut ContactBlock<Self::Float, N>,
@@ -118,7 +118,7 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// # Errors
     /// As [`BoundLaw::sphere_wall`].
     fn evaluate_wall(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         sphere: &CheckedSphere<Self::Float>,
         wall: &Wall<Self::Float>,
         state: &mut Self::State,
@@ -131,23 +131,25 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
 /// evaluation does only the contact's own work. It remembers the normal oscillator of the last
 /// pair of masses it saw (and of the last sphere against a wall), so a scene of one kind of
 /// sphere derives it once; a new pair of masses recomputes it, the same bits as the law's own
-/// evaluation. Cheap to make: make one per thread.
+/// evaluation. It holds a copy of the law (laws are small and `Copy`), so it borrows nothing and
+/// can be stored or moved freely. Cheap to make: make one per thread.
 #[derive(Clone, Copy, Debug)]
-pub struct BoundLaw<'l, L: Law> {
-    law: &'l L,
-    time_step: TimeStep<L::Float>,
-    pair: Memo<[L::Float; 2], PairOscillator<L::Float>>,
-    wall: Memo<L::Float, NormalOscillator<L::Float>>,
-    unstable: usize,
+pub struct BoundLaw<L: Law> {
+    // The fields are the crate's so that an evaluation can borrow the law and the memos apart.
+    pub(crate) law: L,
+    pub(crate) time_step: TimeStep<L::Float>,
+    pub(crate) pair: Memo<[L::Float; 2], PairOscillator<L::Float>>,
+    pub(crate) wall: Memo<L::Float, NormalOscillator<L::Float>>,
+    pub(crate) unstable: usize,
 }
 
 /// A pair of masses' normal oscillator and effective mass.
-type PairOscillator<F> = (NormalOscillator<F>, F);
+pub(crate) type PairOscillator<F> = (NormalOscillator<F>, F);
 
 /// The value derived from the last key. Masses are positive, so the zeros an empty memo starts
 /// from never match.
 #[derive(Clone, Copy, Debug)]
-struct Memo<K, V> {
+pub(crate) struct Memo<K, V> {
     key: K,
     value: V,
 }
@@ -155,7 +157,7 @@ struct Memo<K, V> {
 impl<K: PartialEq, V> Memo<K, V> {
     /// The value of `key`, derived by `derive` only when it differs from the last key.
     #[inline(always)]
-    fn get(&mut self, key: K, derive: impl FnOnce(&K) -> V) -> &V {
+    pub(crate) fn get(&mut self, key: K, derive: impl FnOnce(&K) -> V) -> &V {
         if key != self.key {
             self.value = derive(&key);
             self.key = key;
@@ -164,8 +166,8 @@ impl<K: PartialEq, V> Memo<K, V> {
     }
 }
 
-impl<'l, L: Law> BoundLaw<'l, L> {
-    pub(crate) fn new(law: &'l L, time_step: TimeStep<L::Float>) -> Self {
+impl<L: Law> BoundLaw<L> {
+    pub(crate) fn new(law: L, time_step: TimeStep<L::Float>) -> Self {
         Self {
             law,
             time_step,
@@ -196,8 +198,8 @@ impl<'l, L: Law> BoundLaw<'l, L> {
 
     /// The law.
     #[inline(always)]
-    pub fn law(&self) -> &'l L {
-        self.law
+    pub fn law(&self) -> &L {
+        &self.law
     }
 
     /// The time step.
@@ -238,27 +240,5 @@ impl<'l, L: Law> BoundLaw<'l, L> {
         state: &mut L::State,
     ) -> Result<Interaction<L::Float>, ContactError> {
         L::evaluate_wall(self, sphere, wall, state)
-    }
-
-    /// The oscillator and the effective mass of a pair of masses, derived by `derive` only when
-    /// they differ from the last pair's.
-    #[inline(always)]
-    pub(crate) fn pair_oscillator(
-        &mut self,
-        masses: [L::Float; 2],
-        derive: impl FnOnce(&[L::Float; 2]) -> PairOscillator<L::Float>,
-    ) -> &PairOscillator<L::Float> {
-        self.pair.get(masses, derive)
-    }
-
-    /// The oscillator of a sphere of this mass against a wall; see
-    /// [`BoundLaw::pair_oscillator`].
-    #[inline(always)]
-    pub(crate) fn wall_oscillator(
-        &mut self,
-        mass: L::Float,
-        derive: impl FnOnce(&L::Float) -> NormalOscillator<L::Float>,
-    ) -> &NormalOscillator<L::Float> {
-        self.wall.get(mass, derive)
     }
 }

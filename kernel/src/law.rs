@@ -427,8 +427,8 @@ where
     /// The law bound to a checked time step: it evaluates [`CheckedSphere`]s with no repeated
     /// checks, and computes the normal oscillator once per pair of masses instead of once per
     /// contact. The same bits as [`ContactLaw::sphere_sphere`] and [`ContactLaw::sphere_wall`].
-    pub fn at(&self, time_step: TimeStep<F>) -> BoundLaw<'_, Self> {
-        BoundLaw::new(self, time_step)
+    pub fn at(&self, time_step: TimeStep<F>) -> BoundLaw<Self> {
+        BoundLaw::new(*self, time_step)
     }
 
     /// The outcome for an overlap (`Some` frame) or none, and whether it was a contact past the
@@ -632,28 +632,33 @@ where
 
     #[inline(always)]
     fn evaluate_pair(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         i: &CheckedSphere<F>,
         j: &CheckedSphere<F>,
         state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
-        let law = bound.law();
+        let BoundLaw {
+            law,
+            time_step,
+            pair,
+            unstable: count,
+            ..
+        } = bound;
         let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
-        let time_step = bound.time_step();
         let oscillator = || {
-            *bound.pair_oscillator([i.mass, j.mass], |masses| {
+            *pair.get([i.mass, j.mass], |masses| {
                 let mass = effective_mass(masses[0], masses[1]);
                 (law.normal.oscillator::<M>(mass), mass)
             })
         };
-        let (interaction, unstable) = law.interaction(frame, oscillator, state, time_step)?;
-        bound.count_unstable(unstable);
+        let (interaction, unstable) = law.interaction(frame, oscillator, state, *time_step)?;
+        *count += usize::from(unstable);
         Ok(interaction)
     }
 
     #[inline(always)]
     fn evaluate_pairs<const LANES: usize>(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         block: &PairBlock<F, LANES>,
         states: &mut [Ro::State<T::State>; LANES],
         out: &mut ContactBlock<F, LANES>,
@@ -663,21 +668,25 @@ where
 
     #[inline(always)]
     fn evaluate_wall(
-        bound: &mut BoundLaw<'_, Self>,
+        bound: &mut BoundLaw<Self>,
         sphere: &CheckedSphere<F>,
         wall: &Wall<F>,
         state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
-        let law = bound.law();
+        let BoundLaw {
+            law,
+            time_step,
+            wall: memo,
+            unstable: count,
+            ..
+        } = bound;
         let frame = geometry::sphere_wall(sphere, wall, law.lever_arm);
-        let time_step = bound.time_step();
         let oscillator = || {
-            let oscillator =
-                *bound.wall_oscillator(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
+            let oscillator = *memo.get(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
             (oscillator, sphere.mass)
         };
-        let (interaction, unstable) = law.interaction(frame, oscillator, state, time_step)?;
-        bound.count_unstable(unstable);
+        let (interaction, unstable) = law.interaction(frame, oscillator, state, *time_step)?;
+        *count += usize::from(unstable);
         Ok(interaction)
     }
 }

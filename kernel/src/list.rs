@@ -495,7 +495,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             stats: ListStats::default(),
         };
         let laws = self.rows();
-        let mut bound: [[BoundLaw<'_, L>; M]; M] =
+        let mut bound: [[BoundLaw<L>; M]; M] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
         let outcome = evaluate_pairs(
             spheres,
@@ -598,7 +598,7 @@ fn evaluate_pairs<L: Law, const M: usize>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
     (states, saved): (&mut [L::State], &mut [L::State]),
-    bound: &mut [[BoundLaw<'_, L>; M]; M],
+    bound: &mut [[BoundLaw<L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
     blocks: bool,
 ) -> Result<(), (ListError, usize)> {
@@ -653,7 +653,7 @@ fn evaluate_pairs<L: Law, const M: usize>(
 fn evaluate_walls<L: Law, const M: usize>(
     spheres: &impl Spheres<L::Float>,
     (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
-    bound: &mut [[BoundLaw<'_, L>; M]; M],
+    bound: &mut [[BoundLaw<L>; M]; M],
     sink: &mut Sink<'_, L::Float>,
     first: usize,
 ) -> Result<(), ListError> {
@@ -740,7 +740,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         (states, saved): (&mut [S], &[S]),
         found: usize,
-        (bound, sink, first): (&mut [[BoundLaw<'_, L>; M]; M], &mut Sink<'_, F>, usize),
+        (bound, sink, first): (&mut [[BoundLaw<L>; M]; M], &mut Sink<'_, F>, usize),
     ) -> Option<(usize, ContactError)> {
         for &k in &self.touching[..found] {
             let k = usize::from(k);
@@ -771,7 +771,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         (states, saved): (&mut [S], &[S]),
         found: usize,
-        bound: &mut [[BoundLaw<'_, L>; M]; M],
+        bound: &mut [[BoundLaw<L>; M]; M],
     ) -> Option<(usize, ContactError)> {
         let material = |k: usize| spheres.material(k) as usize;
         let key = |k: usize| {
@@ -856,7 +856,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
 /// keeps the lanes in vector registers (inlined into the large chunk loop, it did not).
 #[inline(never)]
 fn evaluate_block<L: Law>(
-    law: &mut BoundLaw<'_, L>,
+    law: &mut BoundLaw<L>,
     block: &PairBlock<L::Float, LANES>,
     states: &mut [L::State; LANES],
     out: &mut ContactBlock<L::Float, LANES>,

@@ -213,17 +213,17 @@ macro_rules! each_law {
     };
 }
 
-/// Which law a bound handle holds: the law bound to its time step, over a law the handle owns.
+/// Which law a bound handle holds: a copy of the law, bound to its time step.
 #[derive(Debug)]
 enum AnyBound<F: Float> {
-    Stateless(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>>),
-    ModelAA(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>>),
-    ModelAALuding(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>>),
-    Frictionless(BoundLaw<'static, ContactLaw<F, LinearSpringDashpot<F>, Frictionless>>),
-    HertzStateless(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinStateless<F>>>),
-    HertzAA(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinAA<F>>>),
-    HertzAALuding(BoundLaw<'static, ContactLaw<F, Hertz<F>, MindlinAALuding<F>>>),
-    HertzFrictionless(BoundLaw<'static, ContactLaw<F, Hertz<F>, Frictionless>>),
+    Stateless(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>>),
+    ModelAA(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>>),
+    ModelAALuding(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>>),
+    Frictionless(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, Frictionless>>),
+    HertzStateless(BoundLaw<ContactLaw<F, Hertz<F>, MindlinStateless<F>>>),
+    HertzAA(BoundLaw<ContactLaw<F, Hertz<F>, MindlinAA<F>>>),
+    HertzAALuding(BoundLaw<ContactLaw<F, Hertz<F>, MindlinAALuding<F>>>),
+    HertzFrictionless(BoundLaw<ContactLaw<F, Hertz<F>, Frictionless>>),
 }
 
 /// A vector of three components.
@@ -882,16 +882,15 @@ unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law
         return SS_ERR_NULL;
     };
     let dt = law.time_step;
-    // The handle owns a copy of the law; `bound_free` gives it back.
     let bound = match law.law {
-        AnyLaw::Stateless(l) => AnyBound::Stateless(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::ModelAA(l) => AnyBound::ModelAA(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::ModelAALuding(l) => AnyBound::ModelAALuding(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::Frictionless(l) => AnyBound::Frictionless(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::HertzStateless(l) => AnyBound::HertzStateless(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::HertzAA(l) => AnyBound::HertzAA(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::HertzAALuding(l) => AnyBound::HertzAALuding(Box::leak(Box::new(l)).at(dt)),
-        AnyLaw::HertzFrictionless(l) => AnyBound::HertzFrictionless(Box::leak(Box::new(l)).at(dt)),
+        AnyLaw::Stateless(l) => AnyBound::Stateless(l.at(dt)),
+        AnyLaw::ModelAA(l) => AnyBound::ModelAA(l.at(dt)),
+        AnyLaw::ModelAALuding(l) => AnyBound::ModelAALuding(l.at(dt)),
+        AnyLaw::Frictionless(l) => AnyBound::Frictionless(l.at(dt)),
+        AnyLaw::HertzStateless(l) => AnyBound::HertzStateless(l.at(dt)),
+        AnyLaw::HertzAA(l) => AnyBound::HertzAA(l.at(dt)),
+        AnyLaw::HertzAALuding(l) => AnyBound::HertzAALuding(l.at(dt)),
+        AnyLaw::HertzFrictionless(l) => AnyBound::HertzFrictionless(l.at(dt)),
     };
     let handle = ss_bound_law { bound, wall: None };
     // SAFETY: out was checked non-null.
@@ -906,13 +905,7 @@ unsafe fn bound_free<F: Float>(bound: *mut ss_bound_law<F>) {
         return;
     }
     // SAFETY: the handle came from Box::into_raw in bound_new.
-    let handle = unsafe { Box::from_raw(bound) };
-    each_law!(handle.bound, AnyBound, b => {
-        let law = core::ptr::from_ref(b.law()).cast_mut();
-        // SAFETY: the law came from Box::leak in bound_new, and the handle, its only borrower,
-        // is consumed here.
-        drop(unsafe { Box::from_raw(law) });
-    });
+    drop(unsafe { Box::from_raw(bound) });
 }
 
 /// # Safety
@@ -1309,7 +1302,7 @@ impl<F: Float> States<'_, F> {
 /// a time where the kernel says blocks do not pay ([`Law::VECTORISES`]).
 #[inline(always)]
 fn in_blocks<L: Law>(
-    bound: &mut BoundLaw<'_, L>,
+    bound: &mut BoundLaw<L>,
     (i, j): (&SphereSlices<'_, L::Float>, &SphereSlices<'_, L::Float>),
     states: &mut States<'_, L::Float>,
     out: &mut Outputs<'_, L::Float>,
@@ -1395,7 +1388,7 @@ fn fill<F: Float, const N: usize>(
 }
 
 /// The arrays the bound law's per-contact state lives in.
-fn state_arrays<L: Law>(_: &BoundLaw<'_, L>) -> StateArrays
+fn state_arrays<L: Law>(_: &BoundLaw<L>) -> StateArrays
 where
     L::State: Stored<L::Float>,
 {
