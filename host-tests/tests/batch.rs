@@ -10,9 +10,10 @@ use proptest::prelude::*;
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
 use soft_sphere::{
     CheckedSphere, ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction,
-    Law, LeverArm, LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters,
-    MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, NormalModel,
-    Sphere, SpringDisplacement, Stateless, Std, TangentialModel, TangentialParameters, Vec3,
+    Law, LeverArm, LinearAA, LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding,
+    MindlinParameters, MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB,
+    ModelC, NormalModel, Sphere, SpringDisplacement, Stateless, Std, TangentialModel,
+    TangentialParameters, Vec3,
 };
 
 /// Runs `steps` steps of the same pairs one at a time (law `one`) and in blocks of `N` (law
@@ -317,7 +318,7 @@ fn a_tolerating_step_counts_the_same_contacts_in_blocks() {
 }
 
 /// The law of a random collision: `k_n` from its overlap fraction, the rest from its material.
-fn law_of<F: Float>(c: &Collision) -> ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>> {
+fn law_of<F: Float>(c: &Collision) -> LinearAA<F> {
     let (i, j) = c.pair::<f64>();
     let k_n = c.normal_stiffness(i.mass * j.mass / (i.mass + j.mass));
     let m = c.material;

@@ -3,11 +3,11 @@
 //! contact, the bits of the law's own checked evaluation (the peer path).
 
 use soft_sphere::{
-    BoundLaw, CheckedSphere, ContactLaw, ContactState, Interaction, LinearSpringDashpot, ModelAA,
-    Sphere, SpringDisplacement, TangentialParameters, Vec3,
+    BoundLaw, CheckedSphere, ContactLaw, ContactState, Interaction, LinearAA, LinearSpringDashpot,
+    ModelAA, Sphere, SpringDisplacement, TangentialParameters, Vec3,
 };
 
-type Linear = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type Linear = LinearAA<f64>;
 
 fn law() -> Linear {
     ContactLaw::new(

@@ -9,16 +9,16 @@
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, pair_and_wall, wall_of};
 use soft_sphere::{
-    ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearSpring,
-    LinearSpringDashpot, MaterialTable, MaterialWall, MindlinAA, MindlinParameters, ModelAA,
-    Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
+    ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearAA,
+    LinearSpring, LinearSpringDashpot, MaterialTable, MaterialWall, MindlinAA, MindlinParameters,
+    ModelAA, Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
 };
 use soft_sphere_scene::{Domain, Energy, Integrator, NoWalls, StepInput};
 
 const RADIUS: f64 = 0.5e-3;
 const DENSITY: f64 = 2500.0;
 
-type Linear = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type Linear = LinearAA<f64>;
 
 fn linear(restitution: f64, friction: f64) -> Linear {
     ContactLaw::new(

@@ -2,12 +2,12 @@
 //! rejected evaluation leaves the caller's per-contact state exactly as it was.
 
 use soft_sphere::{
-    CheckedSphere, ContactError, ContactLaw, Frictionless, Interaction, LinearSpringDashpot,
-    ModelAA, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
+    CheckedSphere, ContactError, ContactLaw, Frictionless, Interaction, LinearAA,
+    LinearSpringDashpot, ModelAA, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
     TangentialParameters, Vec3, Wall,
 };
 
-fn law() -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
+fn law() -> LinearAA<f64> {
     let normal = LinearSpringDashpot::new(1.0e4, 0.8).unwrap();
     ContactLaw::new(
         normal,

@@ -3,14 +3,14 @@
 //! contacts were inserted in.
 
 use soft_sphere::{
-    ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, LinearSpringDashpot,
-    ModelAA, Sphere, SpringDisplacement, TangentialParameters, TimeStep, Vec3,
+    ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, LinearAA,
+    LinearSpringDashpot, ModelAA, Sphere, SpringDisplacement, TangentialParameters, TimeStep, Vec3,
 };
 
-type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type Linear = LinearAA<f64>;
 type Store<const N: usize> = ContactHistory<SpringDisplacement<f64>, N>;
 
-fn law() -> Law {
+fn law() -> Linear {
     let normal = LinearSpringDashpot::new(1.0e4, 0.8).unwrap();
     ContactLaw::new(
         normal,
@@ -18,7 +18,7 @@ fn law() -> Law {
     )
 }
 
-fn dt(law: &Law) -> TimeStep<f64> {
+fn dt(law: &Linear) -> TimeStep<f64> {
     law.time_step(1e-6, 1e-6).unwrap()
 }
 
@@ -31,7 +31,7 @@ fn sphere(k: u32) -> Sphere<f64> {
 
 fn step<const N: usize>(
     store: &mut Store<N>,
-    law: &Law,
+    law: &Linear,
     i: u32,
     j: u32,
 ) -> Result<Interaction<f64>, ContactError> {

@@ -4,8 +4,8 @@
 use std::mem::size_of;
 
 use soft_sphere::{
-    ContactLaw, Frictionless, LinearSpringDashpot, ModelA, ModelAA, ModelB, ModelC, NonRotating,
-    Rotating, SpringDisplacement, Stateless, TangentialModel,
+    ContactLaw, Frictionless, LinearFrictionless, LinearSpringDashpot, ModelA, ModelAA, ModelB,
+    ModelC, NonRotating, Rotating, SpringDisplacement, Stateless, TangentialModel,
 };
 
 fn state_size<T: TangentialModel<f64>>() -> usize {
@@ -23,15 +23,12 @@ fn off_slots_and_stateless_laws_cost_no_memory() {
     // A frictionless law is its normal slot plus the lever-arm choice and its stable phase,
     // nothing for friction.
     assert_eq!(
-        size_of::<ContactLaw<f64, LinearSpringDashpot<f64>, Frictionless>>(),
+        size_of::<LinearFrictionless<f64>>(),
         size_of::<
             ContactLaw<f64, LinearSpringDashpot<f64>, Frictionless, soft_sphere::Libm, NonRotating>,
         >()
     );
-    assert!(
-        size_of::<ContactLaw<f64, LinearSpringDashpot<f64>, Frictionless>>()
-            <= size_of::<LinearSpringDashpot<f64>>() + 16
-    );
+    assert!(size_of::<LinearFrictionless<f64>>() <= size_of::<LinearSpringDashpot<f64>>() + 16);
 }
 
 #[test]

@@ -6,14 +6,13 @@ use host_tests::impact::floor;
 use host_tests::random::Xorshift;
 use proptest::prelude::*;
 use soft_sphere::{
-    Backup, ContactError, ContactLaw, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
-    Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot, ListArray, ListError,
-    ListOutput, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, Parameter,
-    ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
-    effective_mass,
+    Backup, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing, Interaction,
+    LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput, Material,
+    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, Parameter, ParameterError, Route,
+    SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall, effective_mass,
 };
 
-type Linear = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type Linear = LinearAA<f64>;
 type State = SpringDisplacement<f64>;
 
 fn glass() -> LinearMaterial<f64> {

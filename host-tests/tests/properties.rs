@@ -21,7 +21,7 @@ use soft_sphere::{
     effective_mass,
 };
 
-type Law<F, T> = ContactLaw<F, LinearSpringDashpot<F>, T>;
+type Linear<F, T> = ContactLaw<F, LinearSpringDashpot<F>, T>;
 
 /// Energy stored in a contact's tangential spring, `k_t |xi|^2 / 2` (none for stateless laws).
 trait StoredEnergy {
@@ -65,7 +65,7 @@ fn law_for<F: Float, T: TangentialModel<F>>(
     effective_mass: f64,
     make: impl Fn(TangentialParameters<F>) -> T,
     clamped: bool,
-) -> (Law<F, T>, f64, f64) {
+) -> (Linear<F, T>, f64, f64) {
     let m = c.material;
     let k_n = c.normal_stiffness(effective_mass);
     let k_t = m.stiffness_ratio * k_n;
@@ -84,7 +84,7 @@ fn law_for<F: Float, T: TangentialModel<F>>(
     (ContactLaw::new(normal, make(p)), k_n, k_t)
 }
 
-fn step_for<F: Float, T: TangentialModel<F>>(law: &Law<F, T>, m_star: F) -> TimeStep<F> {
+fn step_for<F: Float, T: TangentialModel<F>>(law: &Linear<F, T>, m_star: F) -> TimeStep<F> {
     law.time_step(law.recommended_time_step(m_star), m_star)
         .expect("the recommended step is stable")
 }

@@ -7,8 +7,9 @@ use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, SceneExt, Threads, pair_and_wall, wall_of};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    CheckedSphere, ContactError, ContactLaw, Interaction, LinearSpringDashpot, MaterialTable,
-    MaterialWall, ModelAA, Sphere, SpringDisplacement, Stateless, TangentialParameters, Vec3, Wall,
+    CheckedSphere, ContactError, ContactLaw, Interaction, LinearAA, LinearSpringDashpot,
+    LinearStateless, MaterialTable, MaterialWall, ModelAA, Sphere, SpringDisplacement, Stateless,
+    TangentialParameters, Vec3, Wall,
 };
 use soft_sphere_scene::{
     Domain, Integrator, NoWalls, Parking, Scene, SceneBuffers, SceneError, StepError, StepInput,
@@ -38,17 +39,17 @@ fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
     (spheres, column.domain(height))
 }
 
-fn law() -> Law {
+fn law() -> Linear {
     ContactLaw::new(
         LinearSpringDashpot::new(1000.0, 0.9).unwrap(),
         ModelAA(TangentialParameters::new(285.7, 0.5, 0.5).unwrap()),
     )
 }
 
-type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+type Linear = LinearAA<f64>;
 
 /// One material: [`law`] for pairs and walls.
-type Table = MaterialTable<Law, 1>;
+type Table = MaterialTable<Linear, 1>;
 
 fn table() -> Table {
     MaterialTable::uniform(law())
@@ -67,7 +68,7 @@ fn input(
     table: &Table,
     (gravity, dt, sphere_mass): (Vec3<f64>, f64, f64),
     integrator: Integrator,
-) -> StepInput<'_, Law, 1> {
+) -> StepInput<'_, Linear, 1> {
     let law = table.law(0, 0).unwrap();
     StepInput {
         table,
@@ -149,7 +150,7 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
         }
         (domain.lower, domain.upper) = (domain.lower + shift, domain.upper + shift);
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
         let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), Integrator::SymplecticEuler);
         let lengths = domain.upper - domain.lower;
@@ -176,7 +177,7 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
     let run = |integrator| {
         let (spheres, domain) = gas(300, 9);
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
         let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), integrator);
         let momentum = |s: &[CheckedSphere<f64>]| {
@@ -226,7 +227,7 @@ fn both_integrators_settle_a_bed_on_the_floor() {
         let (spheres, domain) = gas(150, 3);
         let potential: f64 = spheres.iter().map(|s| s.mass * 9.81 * s.position.z).sum();
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
         let m = scene.spheres()[0].mass;
         let gravity = Vec3::new(0.0, 0.0, -9.81);
         let input = input(&law, (gravity, 4e-6, m), integrator);
@@ -316,7 +317,7 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
     );
     for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
         let mut scene =
-            OwnedScene::<Law, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), NoWalls)
+            OwnedScene::<Linear, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), NoWalls)
                 .unwrap();
         assert!(
             scene.spheres()[0].position.x < 1e-3,
@@ -349,7 +350,7 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
     for (spoil, error) in cases {
         let mut spheres = oblique_pair();
         spoil(&mut spheres[1]);
-        let result = OwnedScene::<Law, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls);
+        let result = OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls);
         assert_eq!(result.err(), Some(SceneError::Sphere { index: 1, error }));
     }
 }
@@ -368,7 +369,7 @@ struct VecBuffers<const K: usize> {
 
 impl<const K: usize> VecBuffers<K> {
     fn new(spheres: usize, capacity: usize, walls: usize) -> Self {
-        let sizes = Scene::<Law, NoWalls, K>::buffer_sizes(
+        let sizes = Scene::<Linear, NoWalls, K>::buffer_sizes(
             &open_box(),
             (DIAMETER, 0.0),
             spheres,
@@ -410,7 +411,7 @@ impl<const K: usize> VecBuffers<K> {
     /// succeeded, whether a pair touched in the last, and the error that stopped it.
     fn run(
         &mut self,
-        input: &StepInput<'_, Law, 1>,
+        input: &StepInput<'_, Linear, 1>,
         spheres: &mut [CheckedSphere<f64>],
         steps: usize,
     ) -> (usize, bool, Option<StepError>) {
@@ -481,7 +482,7 @@ fn material_ids_that_are_not_one_per_sphere_are_refused() {
     let mut spheres = checked_pair();
     let mut b = pair_buffers(0);
     let (_, buffers) = b.buffers();
-    let scene = Scene::<Law, _, 4>::new(
+    let scene = Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut spheres, &[0]),
@@ -497,7 +498,7 @@ fn pair_scene_error<W: WallSet<f64>>(sized_for: usize, walls: W) -> Option<Scene
     let mut spheres = checked_pair();
     let mut b = pair_buffers(sized_for);
     let (materials, buffers) = b.buffers();
-    Scene::<Law, _, 4>::new(
+    Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut spheres, materials),
@@ -512,7 +513,7 @@ fn step_pair_until_touching<'a>(
     table: &Table,
     pair: &'a mut [CheckedSphere<f64>],
     buffers: &'a mut VecBuffers<4>,
-) -> Scene<'a, Law, NoWalls, 4> {
+) -> Scene<'a, Linear, NoWalls, 4> {
     let input = input(
         table,
         (Vec3::ZERO, 2e-6, pair[0].mass),
@@ -542,7 +543,7 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
     let mut again = pair.clone();
     let (materials, buffers) = b.buffers();
     assert!(
-        Scene::<Law, _, 4>::new(
+        Scene::<Linear, _, 4>::new(
             open_box(),
             (DIAMETER, 0.0),
             (&mut again, materials),
@@ -553,7 +554,8 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
     );
     // ... a scene of the first sphere alone does not own it.
     let alone =
-        Scene::<Law, NoWalls, 4>::buffer_sizes(&open_box(), (DIAMETER, 0.0), 1, 4, false).unwrap();
+        Scene::<Linear, NoWalls, 4>::buffer_sizes(&open_box(), (DIAMETER, 0.0), 1, 4, false)
+            .unwrap();
     let buffers = SceneBuffers {
         cells: &mut b.cells[..alone.cells],
         pairs: &mut b.pairs,
@@ -562,7 +564,7 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
         parking: &mut b.parking[..1],
         records: &mut [],
     };
-    let alone = Scene::<Law, _, 4>::new(
+    let alone = Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut pair[..1], &[0]),
@@ -580,7 +582,7 @@ fn a_failed_step_leaves_the_scene_as_it_was() {
     spheres.push(spheres[0]);
     let mass = spheres[0].mass;
     let mut scene =
-        OwnedScene::<Law, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls).unwrap();
+        OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls).unwrap();
     let before = scene.spheres().to_vec();
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     assert_eq!(
@@ -609,7 +611,7 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
     );
     let mut b = pair_buffers(0);
     let (materials, buffers) = b.buffers();
-    let mut scene = Scene::<Law, _, 4>::new(
+    let mut scene = Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut spheres, materials),
@@ -646,7 +648,7 @@ fn threads_give_the_same_bits_as_one_thread() {
         let run = |threads: Option<usize>| {
             let (spheres, domain) = gas(1000, 5);
             let mut scene =
-                OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), walls).unwrap();
+                OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), walls).unwrap();
             let m = scene.spheres()[0].mass;
             let input = input(&law, (gravity, 4e-6, m), integrator);
             let mut contacts = Vec::new();
@@ -790,7 +792,7 @@ fn a_full_parking_loses_no_history_and_a_larger_one_carries_on() {
 fn each_steps_totals_are_what_a_brute_force_search_finds() {
     // The stateless law stores nothing, so the kernel's verdict on each pair (sliding or not)
     // can be had again outside the scene from the positions before the step.
-    type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
+    type Plain = LinearStateless<f64>;
     let law: Plain = ContactLaw::new(
         LinearSpringDashpot::new(1000.0, 0.9).unwrap(),
         Stateless(TangentialParameters::new(285.7, 0.5, 0.3).unwrap()),
@@ -895,7 +897,8 @@ fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box(
         let mass = spheres(x)[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, mass), integrator);
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres(x), open_box(), (DIAMETER, skin), NoWalls).unwrap();
+            OwnedScene::<Linear, _>::new(spheres(x), open_box(), (DIAMETER, skin), NoWalls)
+                .unwrap();
         scene.run(&input, steps, |_, _| {}).unwrap();
         scene.list_builds()
     };
@@ -934,11 +937,11 @@ fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box(
 
 #[test]
 fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
-    type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
+    type Plain = LinearStateless<f64>;
     // Cells at least 1.1 mm on a side in a 6 mm box: 5 x 5 x 5.
     let reach = (DIAMETER, 1e-4);
     let stored =
-        Scene::<Law, [MaterialWall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, true);
+        Scene::<Linear, [MaterialWall<f64>; 2], 4>::buffer_sizes(&open_box(), reach, 7, 40, true);
     assert_eq!(
         stored,
         Ok(soft_sphere_scene::BufferSizes {
@@ -962,7 +965,7 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
     let mut narrow = open_box();
     narrow.upper.x = 3.0e-3; // 2 cells of 1.5 mm
     let sizes = |domain: &Domain<f64>| {
-        Scene::<Law, NoWalls, 4>::buffer_sizes(domain, reach, 2, 4, false).map(|s| s.cells)
+        Scene::<Linear, NoWalls, 4>::buffer_sizes(domain, reach, 2, 4, false).map(|s| s.cells)
     };
     assert_eq!(sizes(&narrow), Err(SceneError::Domain));
     narrow.periodic_x = false;
@@ -977,7 +980,7 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
         let mut spheres = checked_pair();
         let mut b = pair_buffers(0);
         let (materials, buffers) = b.buffers();
-        let scene = Scene::<Law, _, 4>::new(
+        let scene = Scene::<Linear, _, 4>::new(
             open_box(),
             (DIAMETER, skin),
             (&mut spheres, materials),
@@ -1008,7 +1011,7 @@ fn a_wall_moved_between_steps_pushes_the_sphere_it_reaches() {
     let wall = wall(Vec3::new(left - 1e-4, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0));
     let mut b = pair_buffers(1);
     let (materials, buffers) = b.buffers();
-    let mut scene = Scene::<Law, _, 4>::new(
+    let mut scene = Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut spheres, materials),
@@ -1041,7 +1044,7 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
         let mass = sphere.mass;
         let far = Sphere::solid(Vec3::new(0.5e-3, 0.5e-3, 0.5e-3), DIAMETER / 2.0, 2500.0);
         let mut scene =
-            OwnedScene::<Law, _>::new(vec![sphere, far], open_box(), (DIAMETER, 1e-4), NoWalls)
+            OwnedScene::<Linear, _>::new(vec![sphere, far], open_box(), (DIAMETER, 1e-4), NoWalls)
                 .unwrap();
         let input = input(&law, (Vec3::new(0.0, 0.0, -g), dt, mass), integrator);
         scene.run(&input, steps, |_, _| {}).unwrap();
@@ -1075,7 +1078,8 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
 fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
     let law = table();
     let (spheres, domain) = gas(1000, 7);
-    let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+    let mut scene =
+        OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
     let m = scene.spheres()[0].mass;
     // Far into the second half of the spheres, which a second thread advances.
     scene.spheres_mut()[900]
@@ -1097,7 +1101,7 @@ fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
 /// A box of side 2^-7 m centred on the origin, periodic in x and y, and a sphere in it moving at
 /// `speed` in x, stepped at 2^-19 s: each step moves it by exactly 2^-20 m, so positions are
 /// exact and ties can be reached on purpose. A second sphere rests far from it.
-fn exact_motion(speed: f64, start_x: f64) -> (OwnedScene<Law, NoWalls>, StepInputParts) {
+fn exact_motion(speed: f64, start_x: f64) -> (OwnedScene<Linear, NoWalls>, StepInputParts) {
     let half = 2f64.powi(-8);
     let domain = Domain {
         lower: Vec3::new(-half, -half, -half),
@@ -1127,7 +1131,7 @@ fn the_box_is_half_open_and_the_skin_test_strict() {
     let law = table();
     let step = 2f64.powi(-20);
     let lower = -(2f64.powi(-8));
-    let moving = |scene: &OwnedScene<Law, NoWalls>| {
+    let moving = |scene: &OwnedScene<Linear, NoWalls>| {
         scene
             .spheres()
             .iter()
@@ -1196,7 +1200,7 @@ fn threads_keep_every_spheres_wall_history() {
     // Serial (one stretch) against two threads (two stretches of the wall states).
     let run = |threads: Option<usize>| {
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), walls).unwrap();
+            OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), walls).unwrap();
         let mut on_floor = 0;
         let record = |_: usize, s: &StepStats<f64>| on_floor = s.wall_contacts;
         match threads {
@@ -1311,7 +1315,7 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
     // Three spheres, two walls: six wall states.
     let mut b = VecBuffers::<4>::new(3, 8, 2);
     let (materials, buffers) = b.buffers();
-    let mut scene = Scene::<Law, _, 4>::new(
+    let mut scene = Scene::<Linear, _, 4>::new(
         open_box(),
         (DIAMETER, 0.0),
         (&mut checked, materials),
@@ -1353,7 +1357,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         .time_step(0.5 * pair_law.critical_time_step(m / 2.0), m / 2.0)
         .unwrap();
     // Kinetic plus gravitational energy.
-    let energy = |scene: &OwnedScene<Law, [MaterialWall<f64>; 1]>| {
+    let energy = |scene: &OwnedScene<Linear, [MaterialWall<f64>; 1]>| {
         let height: f64 = scene
             .spheres()
             .iter()
@@ -1374,7 +1378,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
             integrator: Integrator::SymplecticEuler,
         };
         let mut scene =
-            OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+            OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
         let start = energy(&scene);
         let mut walls_touched = 0;
         let outcome = scene.run(&input, 20_000, |_, stats| {
@@ -1415,7 +1419,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         integrator: Integrator::SymplecticEuler,
     };
     let mut scene =
-        OwnedScene::<Law, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+        OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
     let outcome = scene.run(&input, 2_000, |_, _| {});
     assert!(
         matches!(
@@ -1430,8 +1434,8 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
     // The scene's own check of the step, from the spheres and walls present, refuses both
     // before a step is taken: the floor's law at a sphere's mass, then (with the floor's law
     // relaxed) the pairs' law at half a sphere's mass.
-    let mut scene = OwnedScene::<Law, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
-    let checked = |scene: &mut OwnedScene<Law, _>, table: &MaterialTable<Law, 2>, dt| {
+    let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+    let checked = |scene: &mut OwnedScene<Linear, _>, table: &MaterialTable<Linear, 2>, dt| {
         scene.scene(|s| s.time_step(table, dt)).unwrap()
     };
     let refused = checked(&mut scene, &table, checked_for_pairs.seconds());

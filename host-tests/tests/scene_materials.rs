@@ -6,14 +6,14 @@
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene};
 use soft_sphere::{
-    CheckedSphere, ContactLaw, Interaction, LinearMaterial, LinearMixing, LinearSpringDashpot,
-    MaterialTable, MaterialWall, Sphere, Stateless, Vec3, Wall,
+    CheckedSphere, Interaction, LinearMaterial, LinearMixing, LinearStateless, MaterialTable,
+    MaterialWall, Sphere, Stateless, Vec3, Wall,
 };
 use soft_sphere_scene::{ContactBodies, Domain, Integrator, StepError, StepInput};
 
 const DIAMETER: f64 = 1e-3;
 
-type Plain = ContactLaw<f64, LinearSpringDashpot<f64>, Stateless<f64>>;
+type Plain = LinearStateless<f64>;
 
 /// Glass (0) and a stiffer, rougher steel (1), mixed by the field's rules; the stateless law
 /// keeps no history, so a contact can be evaluated again outside the scene.

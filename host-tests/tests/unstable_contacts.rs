@@ -8,13 +8,13 @@ use host_tests::impact::floor;
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, Interaction, Law,
-    LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3, effective_mass,
+    LinearAA, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3, effective_mass,
 };
 
 const RADIUS: f64 = 1.0e-3;
 const DENSITY: f64 = 2500.0;
 
-fn linear_aa(stiffness: f64) -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
+fn linear_aa(stiffness: f64) -> LinearAA<f64> {
     ContactLaw::new(
         LinearSpringDashpot::new(stiffness, 0.7).unwrap(),
         ModelAA(TangentialParameters::new(0.8 * stiffness, 0.5, 0.4).unwrap()),

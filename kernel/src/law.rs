@@ -34,8 +34,8 @@ use crate::vector::Vec3;
 ///
 /// // A frictionless, non-rotating f32 law on the fast approximate backend: no slip velocity, no
 /// // tangential force, no torque and no per-contact state are computed or stored.
-/// type Law = ContactLaw<f32, LinearSpringDashpot<f32>, Frictionless, Micromath, NonRotating>;
-/// let law: Law = ContactLaw::new(LinearSpringDashpot::new(500.0, 0.9).unwrap(), Frictionless)
+/// type Light = ContactLaw<f32, LinearSpringDashpot<f32>, Frictionless, Micromath, NonRotating>;
+/// let law: Light = ContactLaw::new(LinearSpringDashpot::new(500.0, 0.9).unwrap(), Frictionless)
 ///     .with_backend::<Micromath>()
 ///     .without_rotation();
 ///

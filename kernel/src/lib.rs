@@ -205,6 +205,7 @@ mod float;
 mod fuzz_inputs;
 mod geometry;
 mod law;
+mod laws;
 mod list;
 mod material;
 mod mixing;
@@ -231,6 +232,10 @@ pub use error::{ContactError, Parameter, ParameterError};
 pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};
+pub use laws::{
+    HertzAA, HertzAALuding, HertzFrictionless, HertzMicroSlip, HertzStateless, LinearAA,
+    LinearAALuding, LinearFrictionless, LinearStateless,
+};
 pub use list::{
     Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall, Route,
 };

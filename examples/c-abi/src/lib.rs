@@ -33,10 +33,11 @@ use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless, Hertz,
-    HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MicroSlipSprings,
-    MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, ModelAA,
-    ModelAALuding, Parameter, ParameterError, RollingSpring, Sphere, SpringDisplacement, Stateless,
-    Std, TangentialParameters, TimeStep, Vec3, Wall,
+    HertzAA, HertzAALuding, HertzFrictionless, HertzImpact, HertzStateless, Interaction, Law,
+    LinearAA, LinearAALuding, LinearFrictionless, LinearSpringDashpot, LinearStateless, Material,
+    MathBackend, MicroSlipSprings, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
+    MindlinStateless, ModelAA, ModelAALuding, Parameter, ParameterError, RollingSpring, Sphere,
+    SpringDisplacement, Stateless, Std, TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -186,14 +187,14 @@ fn contact_code(error: ContactError) -> i32 {
 /// Which law a handle holds.
 #[derive(Clone, Copy, Debug)]
 enum AnyLaw<F: Float> {
-    Stateless(ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>),
-    ModelAA(ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>),
-    ModelAALuding(ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>),
-    Frictionless(ContactLaw<F, LinearSpringDashpot<F>, Frictionless>),
-    HertzStateless(ContactLaw<F, Hertz<F>, MindlinStateless<F>>),
-    HertzAA(ContactLaw<F, Hertz<F>, MindlinAA<F>>),
-    HertzAALuding(ContactLaw<F, Hertz<F>, MindlinAALuding<F>>),
-    HertzFrictionless(ContactLaw<F, Hertz<F>, Frictionless>),
+    Stateless(LinearStateless<F>),
+    ModelAA(LinearAA<F>),
+    ModelAALuding(LinearAALuding<F>),
+    Frictionless(LinearFrictionless<F>),
+    HertzStateless(HertzStateless<F>),
+    HertzAA(HertzAA<F>),
+    HertzAALuding(HertzAALuding<F>),
+    HertzFrictionless(HertzFrictionless<F>),
 }
 
 /// `$body` with `$law` bound to the law inside an [`AnyLaw`] or an [`AnyBound`], whichever it is
@@ -216,14 +217,14 @@ macro_rules! each_law {
 /// Which law a bound handle holds: a copy of the law, bound to its time step.
 #[derive(Debug)]
 enum AnyBound<F: Float> {
-    Stateless(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>>),
-    ModelAA(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>>),
-    ModelAALuding(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>>),
-    Frictionless(BoundLaw<ContactLaw<F, LinearSpringDashpot<F>, Frictionless>>),
-    HertzStateless(BoundLaw<ContactLaw<F, Hertz<F>, MindlinStateless<F>>>),
-    HertzAA(BoundLaw<ContactLaw<F, Hertz<F>, MindlinAA<F>>>),
-    HertzAALuding(BoundLaw<ContactLaw<F, Hertz<F>, MindlinAALuding<F>>>),
-    HertzFrictionless(BoundLaw<ContactLaw<F, Hertz<F>, Frictionless>>),
+    Stateless(BoundLaw<LinearStateless<F>>),
+    ModelAA(BoundLaw<LinearAA<F>>),
+    ModelAALuding(BoundLaw<LinearAALuding<F>>),
+    Frictionless(BoundLaw<LinearFrictionless<F>>),
+    HertzStateless(BoundLaw<HertzStateless<F>>),
+    HertzAA(BoundLaw<HertzAA<F>>),
+    HertzAALuding(BoundLaw<HertzAALuding<F>>),
+    HertzFrictionless(BoundLaw<HertzFrictionless<F>>),
 }
 
 /// A vector of three components.

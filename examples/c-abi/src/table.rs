@@ -9,11 +9,11 @@
 
 use soft_sphere::{
     Backup, CheckedSphere, ContactLaw, ContactList, ElasticMaterial, ElasticPlasticRolling, Float,
-    Frictionless, Hertz, HertzImpact, HertzMixing, Interaction, Law, LinearMaterial, LinearMixing,
-    ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend, MicroSlip, MindlinAA,
-    MindlinAALuding, MindlinParameters, MindlinStateless, Mixing, ModelAA, ModelAALuding,
-    NormalModel, ParameterError, Rotation, Sphere, SphereArrays, Stateless, TangentialModel,
-    TimeStep, Vec3,
+    Frictionless, HertzImpact, HertzMicroSlip, HertzMixing, Interaction, Law, LinearMaterial,
+    LinearMixing, ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend,
+    MicroSlip, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, Mixing, ModelAA,
+    ModelAALuding, NormalModel, ParameterError, Rotation, Sphere, SphereArrays, Stateless,
+    TangentialModel, TimeStep, Vec3,
 };
 
 use crate::{
@@ -378,7 +378,7 @@ struct MicroSlipMixing<F: Float> {
 
 impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
     type Properties = ElasticMaterial<F>;
-    type Law = ContactLaw<F, Hertz<F>, MicroSlip<F, SS_MICROSLIP_SPRINGS>>;
+    type Law = HertzMicroSlip<F, SS_MICROSLIP_SPRINGS>;
 
     fn law(&self, i: &Self::Properties, j: &Self::Properties) -> Result<Self::Law, ParameterError> {
         let mindlin = HertzMixing::new(self.largest, MindlinAA).law(i, j)?;

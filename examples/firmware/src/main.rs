@@ -80,10 +80,10 @@ fn pair() -> (Sphere<f32>, Sphere<f32>) {
 }
 
 /// A law of this firmware, by tangential model.
-type Law<T> = ContactLaw<f32, LinearSpringDashpot<f32>, T>;
+type Linear<T> = ContactLaw<f32, LinearSpringDashpot<f32>, T>;
 /// The signature of the per-law contact routines.
 type Routine<T> = fn(
-    &Law<T>,
+    &Linear<T>,
     &Sphere<f32>,
     &Sphere<f32>,
     &mut <T as TangentialModel<f32>>::State,

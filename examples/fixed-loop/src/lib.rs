@@ -45,7 +45,7 @@ pub const DENSITY: f32 = 2500.0;
 pub const GRAVITY: f32 = 9.81;
 
 /// The law every contact of the scene uses.
-pub type Law<M> = ContactLaw<f32, LinearSpringDashpot<f32>, ModelAA<f32>, M>;
+pub type LoopLaw<M> = ContactLaw<f32, LinearSpringDashpot<f32>, ModelAA<f32>, M>;
 
 /// Energies of the scene at one instant.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +66,7 @@ pub struct BoxScene<M: MathBackend<f32>> {
     walls: [Wall<f32>; WALLS],
     wall_springs: [[SpringDisplacement<f32>; WALLS]; SPHERES],
     pair_springs: ContactHistory<SpringDisplacement<f32>, PAIR_CAPACITY>,
-    law: Law<M>,
+    law: LoopLaw<M>,
     time_step: TimeStep<f32>,
 }
 

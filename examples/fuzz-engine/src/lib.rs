@@ -7,12 +7,12 @@ use std::collections::HashMap;
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactError, ContactForces, ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere,
-    SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall,
+    ContactError, ContactForces, ContactLaw, Interaction, LinearAA, LinearSpringDashpot, ModelAA,
+    Sphere, SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall,
 };
 
 /// The law this engine uses.
-pub type Law = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>>;
+pub type Linear = LinearAA<f64>;
 
 /// The engine's whole state.
 #[derive(Clone, Debug)]
@@ -25,7 +25,7 @@ pub struct Engine {
     pub springs: HashMap<(usize, usize), SpringDisplacement<f64>>,
     /// The springs of the sphere-wall contacts, `(sphere, wall)`.
     pub wall_springs: HashMap<(usize, usize), SpringDisplacement<f64>>,
-    law: Law,
+    law: Linear,
     step: TimeStep<f64>,
 }
 

@@ -4,9 +4,9 @@
 //! benchmark's published reference curves.
 
 use soft_sphere::{
-    ContactLaw, Frictionless, Hertz, HertzImpact, Law, LinearSpringDashpot, Material, MicroSlip,
-    MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelAA, Sphere,
-    TangentialParameters, Vec3, effective_mass,
+    ContactLaw, Frictionless, Hertz, HertzImpact, HertzMicroSlip, Law, LinearAA,
+    LinearSpringDashpot, Material, MicroSlip, MindlinAA, MindlinAALuding, MindlinParameters,
+    MindlinStateless, ModelAA, Sphere, TangentialParameters, Vec3, effective_mass,
 };
 
 use super::{CaseOutput, Cell, Table, rms};
@@ -213,7 +213,7 @@ impl Pair {
     /// The linear law a user would set up for the same impact: `k_n` with Hertz's contact
     /// duration, `k_t / k_n = 4 G* / E*` (Mindlin's ratio, `2 (1 - nu) / (2 - nu)` for one
     /// material), the same `e` and dashpot ratio.
-    pub fn linear(&self) -> ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>> {
+    pub fn linear(&self) -> LinearAA<f64> {
         let duration = self.hertz_duration();
         let undamped = LinearSpringDashpot::new(1.0, self.restitution).expect("valid");
         // t_c = pi / wd with wd = sqrt(k / m*) sqrt(1 - zeta^2).
@@ -235,9 +235,7 @@ impl Pair {
     }
 
     /// Hertz with micro-slip, `SPRINGS` springs spanning the declared impact's contact radius.
-    pub fn micro_slip<const SPRINGS: usize>(
-        &self,
-    ) -> ContactLaw<f64, Hertz<f64>, MicroSlip<f64, SPRINGS>> {
+    pub fn micro_slip<const SPRINGS: usize>(&self) -> HertzMicroSlip<f64, SPRINGS> {
         let hertz = self.hertz();
         let span = hertz.largest_contact_radius(self.effective_mass);
         ContactLaw::new(
