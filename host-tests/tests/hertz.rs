@@ -62,7 +62,11 @@ fn bad_materials_and_laws_are_refused_with_their_error() {
     );
     assert_eq!(
         Hertz::with_damping_factor(1e9, -0.1, good),
-        Err(Negative(Parameter::Restitution))
+        Err(Negative(Parameter::DampingFactor))
+    );
+    assert_eq!(
+        Hertz::with_damping_factor(1e9, f64::NAN, good),
+        Err(NonFinite(Parameter::DampingFactor))
     );
     assert_eq!(
         MindlinParameters::new(0.0, 0.5, 0.3),

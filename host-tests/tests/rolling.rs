@@ -34,7 +34,7 @@ fn bad_rolling_parameters_are_refused_with_their_error() {
         e(0.1, 1.0, -1.0, 1e-9),
         Err(Negative(Parameter::RollingDamping))
     );
-    assert_eq!(e(0.1, 1.0, 0.0, 0.0), Err(NotPositive(Parameter::Mass)));
+    assert_eq!(e(0.1, 1.0, 0.0, 0.0), Err(NotPositive(Parameter::Inertia)));
     assert_eq!(
         e(f64::INFINITY, 1.0, 0.0, 1e-9),
         Err(NonFinite(Parameter::RollingFriction))

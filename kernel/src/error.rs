@@ -36,6 +36,10 @@ pub enum Parameter {
     RollingStiffness,
     /// The rolling dashpot `eta_r`.
     RollingDamping,
+    /// Hertz's dashpot factor `alpha`, when given instead of the restitution.
+    DampingFactor,
+    /// The smallest moment of inertia a rolling spring is checked for.
+    Inertia,
 }
 
 /// A parameter rejected by a constructor.

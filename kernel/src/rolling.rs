@@ -193,7 +193,7 @@ impl<F: Float> ElasticPlasticRolling<F> {
             friction: non_negative(friction, Parameter::RollingFriction)?,
             stiffness: positive(stiffness, Parameter::RollingStiffness)?,
             damping: non_negative(damping, Parameter::RollingDamping)?,
-            smallest_inertia: positive(smallest_inertia, Parameter::Mass)?,
+            smallest_inertia: positive(smallest_inertia, Parameter::Inertia)?,
         })
     }
 

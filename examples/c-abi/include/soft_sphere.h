@@ -223,6 +223,21 @@
 #define SS_PARAMETER_ROLLING_DAMPING 15
 
 /**
+ * A wall's point or normal.
+ */
+#define SS_PARAMETER_WALL 16
+
+/**
+ * Hertz's dashpot factor `alpha`, when given instead of the restitution.
+ */
+#define SS_PARAMETER_DAMPING_FACTOR 17
+
+/**
+ * The smallest moment of inertia a rolling spring is checked for.
+ */
+#define SS_PARAMETER_INERTIA 18
+
+/**
  * The most materials a table holds (LAMMPS atom types).
  */
 #define SS_MATERIALS_MAX 16

@@ -129,6 +129,12 @@ pub const SS_PARAMETER_ROLLING_FRICTION: i32 = 13;
 pub const SS_PARAMETER_ROLLING_STIFFNESS: i32 = 14;
 /// The rolling dashpot `eta_r`.
 pub const SS_PARAMETER_ROLLING_DAMPING: i32 = 15;
+/// A wall's point or normal.
+pub const SS_PARAMETER_WALL: i32 = 16;
+/// Hertz's dashpot factor `alpha`, when given instead of the restitution.
+pub const SS_PARAMETER_DAMPING_FACTOR: i32 = 17;
+/// The smallest moment of inertia a rolling spring is checked for.
+pub const SS_PARAMETER_INERTIA: i32 = 18;
 
 /// Which parameter `error` is about, as an `SS_PARAMETER_*` code.
 fn rejected_parameter(error: ParameterError) -> i32 {
@@ -156,7 +162,10 @@ fn rejected_parameter(error: ParameterError) -> i32 {
         Parameter::RollingFriction => SS_PARAMETER_ROLLING_FRICTION,
         Parameter::RollingStiffness => SS_PARAMETER_ROLLING_STIFFNESS,
         Parameter::RollingDamping => SS_PARAMETER_ROLLING_DAMPING,
-        _ => SS_PARAMETER_MASS,
+        Parameter::Mass => SS_PARAMETER_MASS,
+        Parameter::Wall => SS_PARAMETER_WALL,
+        Parameter::DampingFactor => SS_PARAMETER_DAMPING_FACTOR,
+        Parameter::Inertia => SS_PARAMETER_INERTIA,
     }
 }
 

@@ -149,6 +149,12 @@ const char *SoftSphere::parameter_name(int parameter, int model)
       return "k_r (rolling stiffness)";
     case SS_PARAMETER_ROLLING_DAMPING:
       return "eta_r (rolling dashpot)";
+    case SS_PARAMETER_WALL:
+      return "the wall";
+    case SS_PARAMETER_DAMPING_FACTOR:
+      return "alpha (Hertz damping factor)";
+    case SS_PARAMETER_INERTIA:
+      return "the smallest moment of inertia";
     default:
       return "the law";
   }

@@ -157,13 +157,13 @@ impl<F: Float> Hertz<F> {
     ///
     /// # Errors
     /// As [`Hertz::new`]; [`ParameterError::NonFinite`] / [`ParameterError::Negative`] for
-    /// `alpha` ([`Parameter::Restitution`]).
+    /// `alpha` ([`Parameter::DampingFactor`]).
     pub fn with_damping_factor(
         effective_modulus: F,
         damping_factor: F,
         largest: HertzImpact<F>,
     ) -> Result<Self, ParameterError> {
-        let alpha = non_negative(damping_factor, Parameter::Restitution)?;
+        let alpha = non_negative(damping_factor, Parameter::DampingFactor)?;
         let law = Self::new(effective_modulus, F::ONE, largest)?;
         let (rebound, duration) =
             dimensionless_impact(alpha.to_f64()).unwrap_or((0.0, f64::INFINITY));
