@@ -1,5 +1,5 @@
 //! Which build a benchmark ran in, for its report: the vector instructions the compiler was
-//! allowed to use (`RUSTFLAGS="-C target-cpu=..."`; README, "Builds for your CPU").
+//! allowed to use (`RUSTFLAGS="-C target-cpu=..."`; docs/performance.md, "Builds for your CPU").
 
 /// The build's instruction level, as the benchmarks report it.
 pub fn describe() -> &'static str {

@@ -167,7 +167,7 @@ fn first_order_error_shrinks_with_the_step() {
 
 #[test]
 fn single_precision_and_micromath_rebound_close_to_e() {
-    // f32 and the approximate backend, at t_c/2000: bounds stated in the README.
+    // f32 and the approximate backend, at t_c/2000: bounds stated in docs/validation.md.
     for e in [0.5f32, 0.9, 1.0] {
         let normal = LinearSpringDashpot::new(STIFFNESS as f32, e).unwrap();
         let sphere = incoming_sphere(RADIUS as f32, DENSITY as f32, SPEED, 0.0);

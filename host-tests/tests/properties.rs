@@ -2,7 +2,7 @@
 //! every law in f32 and f64 keeps the Coulomb limit, never creates energy, is symmetric bit for
 //! bit, conserves momentum, is frame invariant and deterministic; f32 tracks f64 and micromath
 //! tracks libm within stated bounds. `PROPTEST_CASES` sets the case count (default 64 per
-//! property; the slow configuration in the README uses 6400).
+//! property; the slow configuration in docs/validation.md uses 6400).
 //!
 //! Each property is a generic function; `each_law!` runs it for every tangential law and
 //! `for_both_precisions!` instantiates it as an f32 and an f64 proptest.
@@ -157,7 +157,7 @@ where
     );
     j.position += normal * gap;
     // Where f32 breaks down: a step must move a sphere by more than the rounding of its
-    // coordinates, or the contact never ends (documented in the README; the f32 stress test
+    // coordinates, or the contact never ends (documented in docs/validation.md; the f32 stress test
     // measures it). The slowest separation here is e^-2 of the approach speed (clamped, e = 0).
     let extent = (i.radius + j.radius).to_f64();
     let slowest_step = 0.1 * c.speed * dt.seconds().to_f64();
@@ -405,7 +405,7 @@ where
     T::State: StoredEnergy,
 {
     // The contact-plane arm: with arm R the two arms add to more than the centre distance and
-    // angular momentum changes by about delta/R (README, "Decisions").
+    // angular momentum changes by about delta/R (docs/physics.md, "Decisions").
     let (trace, after) = collide(c, make, false, LeverArm::ContactPlane)?;
     let (p0, l0, p_scale, l_scale) = trace.momentum_before;
     let (p1, l1, _, _) = momenta(&after);
@@ -609,7 +609,7 @@ for_both_precisions!(same_inputs_same_bits, several_collisions(), determinism);
 // 2b. Energy of Models A, B and C: the same search, reported --------------------------------
 
 /// Runs the energy search for the laws Elghannay & Tafti call wrong with a fixed seed and reports the
-/// largest gains it finds. A counterexample is a documented result (README), not a failure; the
+/// largest gains it finds. A counterexample is a documented result (docs/validation.md), not a failure; the
 /// test asserts what was found so that a change in it is noticed.
 #[test]
 fn energy_search_on_models_a_b_c_reports_what_it_finds() {

@@ -11,7 +11,7 @@
 //! `batch speed-up over the scalar law: X.XX (f64 model AA, N contacts, same bits: yes|no)`.
 //!
 //! Usage: `cargo run --release -p host-tests --bin contact_batch_bench -- [--pairs 1024]
-//! [--rounds 31]`; build for the machine with `RUSTFLAGS="-C target-cpu=x86-64-v3"` (README,
+//! [--rounds 31]`; build for the machine with `RUSTFLAGS="-C target-cpu=x86-64-v3"` (docs/performance.md,
 //! "Builds for your CPU").
 
 use std::error::Error;

@@ -672,8 +672,8 @@ pub fn kharaz(mut progress: impl FnMut(&str)) -> CaseOutput {
 // ---------------------------------------------------------------- Tests 5 and 6: oblique impacts
 
 /// The RMS distance from the reference curves of Tests 5 and 6 that the run reports Hertz-Mindlin
-/// (plain cap) against; measured and shown, not enforced (README, "Hertz-Mindlin and Chung &
-/// Ooi's benchmark", says why it is not reached).
+/// (plain cap) against; measured and shown, not enforced (docs/validation.md, "Hertz-Mindlin and
+/// Chung & Ooi's benchmark", says why it is not reached).
 pub const REFERENCE_RMS_GOAL: f64 = 0.10;
 
 /// Absolute tolerance on the RMS distance from rigid-body theory in gross sliding at `e = 1`.

@@ -407,7 +407,7 @@ fn step_dependence(setup: &Setup) -> Table {
 }
 
 /// Below this angle (deg) the published MFiX values are not reproduced by a converged linear
-/// model, nor by an MFiX-like discretisation; see the README.
+/// model, nor by an MFiX-like discretisation; see docs/validation.md.
 pub const MFIX_SMALL_ANGLE: f64 = 5.0;
 
 /// Model AA with the MFiX DEM05 inputs at the reference's 30 angles, against it.
