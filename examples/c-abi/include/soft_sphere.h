@@ -1533,6 +1533,55 @@ int32_t ss_effective_moduli_f32(const ss_material_f32 *i,
                                 float *effective_shear_modulus);
 
 /**
+ * How many laws the C ABI names (`ss_model_code` counts them; the material tables also take
+ * `SS_MODEL_HERTZ_MICROSLIP`, which has no name).
+ */
+size_t ss_model_count(void);
+
+/**
+ * The `SS_MODEL_*` code of the `index`-th named law (from 0), or -1 past the last.
+ */
+int32_t ss_model_code(size_t index);
+
+/**
+ * The name of law `model` as an input script writes it (`"aa"`, `"hertz/aa/luding"`, ...), or
+ * null for a code with no name.
+ */
+const char *ss_model_name(int32_t model);
+
+/**
+ * Writes the `SS_MODEL_*` code of the law named `name` (NUL-terminated) to `*model`. Returns
+ * `SS_OK`, `SS_ERR_NULL`, or `SS_ERR_UNKNOWN_MODEL` (then `*model` is unchanged).
+ *
+ * # Safety
+ * Non-null pointers must be valid; `name` must be NUL-terminated.
+ */
+int32_t ss_model_of_name(const char *name, int32_t *model);
+
+/**
+ * 1 when law `model` is of Hertz's family (its parameters are `E`, `nu` and a declared
+ * impact; `SS_MODEL_HERTZ_MICROSLIP` included), 0 otherwise.
+ */
+int32_t ss_model_is_hertz(int32_t model);
+
+/**
+ * What an `SS_PARAMETER_*` code names, for a law of `model` (the modulus is Young's `E` for
+ * Hertz's family), as a user reads it: `"k_n (normal stiffness)"`, ...
+ */
+const char *ss_parameter_name(int32_t parameter, int32_t model);
+
+/**
+ * What an error code says of the parameter it is about, to follow its name: `"must be
+ * positive"`, ...
+ */
+const char *ss_parameter_error_text(int32_t code);
+
+/**
+ * What a contact or list error code means, as a sentence.
+ */
+const char *ss_contact_error_text(int32_t code);
+
+/**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching
  * `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
  *
@@ -1625,7 +1674,7 @@ int32_t ss_bound_sphere_wall_f64(ss_bound_law_f64 *bound,
  * of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
  * state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
  * pair's state and outputs are left as they were. The kernel evaluates the pairs in
- * vector-width blocks (build for your CPU to use its vectors: README, "Batches").
+ * vector-width blocks (build for your CPU to use its vectors: docs/performance.md, "Batches").
  * Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
  * for the stateless and frictionless laws), before touching anything; else `SS_OK`.
  *
@@ -1915,7 +1964,7 @@ int32_t ss_bound_sphere_wall_f32(ss_bound_law_f32 *bound,
  * of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
  * state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
  * pair's state and outputs are left as they were. The kernel evaluates the pairs in
- * vector-width blocks (build for your CPU to use its vectors: README, "Batches").
+ * vector-width blocks (build for your CPU to use its vectors: docs/performance.md, "Batches").
  * Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
  * for the stateless and frictionless laws), before touching anything; else `SS_OK`.
  *

@@ -21,7 +21,15 @@
 
 #![allow(non_camel_case_types)] // C names: ss_law_f64, ss_sphere_f32, ...
 
+#[macro_use]
+mod registry;
+mod names;
 pub mod table;
+
+pub use names::{
+    ss_contact_error_text, ss_model_code, ss_model_count, ss_model_is_hertz, ss_model_name,
+    ss_model_of_name, ss_parameter_error_text, ss_parameter_name,
+};
 
 pub use table::{
     SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX,
@@ -29,15 +37,14 @@ pub use table::{
     ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report, ss_walls,
 };
 
+use registry::{AnyBound, AnyLaw, hertz_family};
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, ContactLaw, ContactState, Float, Frictionless, Hertz,
-    HertzAA, HertzAALuding, HertzFrictionless, HertzImpact, HertzStateless, Interaction, Law,
-    LinearAA, LinearAALuding, LinearFrictionless, LinearSpringDashpot, LinearStateless, Material,
-    MathBackend, MicroSlipSprings, MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring,
-    MindlinStateless, ModelAA, ModelAALuding, Parameter, ParameterError, RollingSpring, Sphere,
-    SpringDisplacement, Stateless, Std, TangentialParameters, TimeStep, Vec3, Wall,
+    HertzImpact, Interaction, Law, LinearSpringDashpot, Material, MathBackend, MicroSlipSprings,
+    MindlinSpring, Parameter, ParameterError, RollingSpring, Sphere, SpringDisplacement, Std,
+    TimeStep, Vec3, Wall,
 };
 
 /// Success.
@@ -191,49 +198,6 @@ fn contact_code(error: ContactError) -> i32 {
         ContactError::PastStableStep => SS_ERR_PAST_STABLE_STEP,
         _ => SS_ERR_NON_FINITE_RESULT,
     }
-}
-
-/// Which law a handle holds.
-#[derive(Clone, Copy, Debug)]
-enum AnyLaw<F: Float> {
-    Stateless(LinearStateless<F>),
-    ModelAA(LinearAA<F>),
-    ModelAALuding(LinearAALuding<F>),
-    Frictionless(LinearFrictionless<F>),
-    HertzStateless(HertzStateless<F>),
-    HertzAA(HertzAA<F>),
-    HertzAALuding(HertzAALuding<F>),
-    HertzFrictionless(HertzFrictionless<F>),
-}
-
-/// `$body` with `$law` bound to the law inside an [`AnyLaw`] or an [`AnyBound`], whichever it is
-/// (each arm is compiled for its own law type).
-macro_rules! each_law {
-    ($any:expr, $kind:ident, $law:pat => $body:expr) => {
-        match $any {
-            $kind::Stateless($law) => $body,
-            $kind::ModelAA($law) => $body,
-            $kind::ModelAALuding($law) => $body,
-            $kind::Frictionless($law) => $body,
-            $kind::HertzStateless($law) => $body,
-            $kind::HertzAA($law) => $body,
-            $kind::HertzAALuding($law) => $body,
-            $kind::HertzFrictionless($law) => $body,
-        }
-    };
-}
-
-/// Which law a bound handle holds: a copy of the law, bound to its time step.
-#[derive(Debug)]
-enum AnyBound<F: Float> {
-    Stateless(BoundLaw<LinearStateless<F>>),
-    ModelAA(BoundLaw<LinearAA<F>>),
-    ModelAALuding(BoundLaw<LinearAALuding<F>>),
-    Frictionless(BoundLaw<LinearFrictionless<F>>),
-    HertzStateless(BoundLaw<HertzStateless<F>>),
-    HertzAA(BoundLaw<HertzAA<F>>),
-    HertzAALuding(BoundLaw<HertzAALuding<F>>),
-    HertzFrictionless(BoundLaw<HertzFrictionless<F>>),
 }
 
 /// A vector of three components.
@@ -392,110 +356,13 @@ fn build_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
 
 /// The law `*p` describes, or the error code and the `SS_PARAMETER_*` it is about.
 fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
-    let hertz = || -> Result<ss_law<F>, ParameterError> {
-        let largest = HertzImpact {
-            speed: p.largest_impact_speed,
-            effective_radius: p.largest_effective_radius,
-        };
-        let normal = Hertz::new(p.effective_modulus, p.restitution, largest)?;
-        let (dt, m) = (p.time_step, p.smallest_effective_mass);
-        if p.model == SS_MODEL_HERTZ_FRICTIONLESS {
-            let law = ContactLaw::new(normal, Frictionless);
-            let time_step = law.time_step(dt, m)?;
-            return Ok(ss_law {
-                law: AnyLaw::HertzFrictionless(law),
-                time_step,
-            });
-        }
-        let tangential =
-            MindlinParameters::new(p.effective_shear_modulus, p.dashpot_ratio, p.friction)?;
-        Ok(match p.model {
-            SS_MODEL_HERTZ_STATELESS => {
-                let law = ContactLaw::new(normal, MindlinStateless(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::HertzStateless(law),
-                    time_step,
-                }
-            }
-            SS_MODEL_HERTZ_AA_LUDING => {
-                let law = ContactLaw::new(normal, MindlinAALuding(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::HertzAALuding(law),
-                    time_step,
-                }
-            }
-            _ => {
-                let law = ContactLaw::new(normal, MindlinAA(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::HertzAA(law),
-                    time_step,
-                }
-            }
-        })
-    };
-    let built = || -> Result<ss_law<F>, ParameterError> {
-        let normal = LinearSpringDashpot::new(p.normal_stiffness, p.restitution)?;
-        let (dt, m) = (p.time_step, p.smallest_effective_mass);
-        if p.model == SS_MODEL_FRICTIONLESS {
-            let law = ContactLaw::new(normal, Frictionless);
-            let time_step = law.time_step(dt, m)?;
-            return Ok(ss_law {
-                law: AnyLaw::Frictionless(law),
-                time_step,
-            });
-        }
-        let tangential =
-            TangentialParameters::new(p.tangential_stiffness, p.dashpot_ratio, p.friction)?;
-        Ok(match p.model {
-            SS_MODEL_STATELESS => {
-                let law = ContactLaw::new(normal, Stateless(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::Stateless(law),
-                    time_step,
-                }
-            }
-            SS_MODEL_AA_LUDING => {
-                let law = ContactLaw::new(normal, ModelAALuding(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::ModelAALuding(law),
-                    time_step,
-                }
-            }
-            _ => {
-                let law = ContactLaw::new(normal, ModelAA(tangential));
-                let time_step = law.time_step(dt, m)?;
-                ss_law {
-                    law: AnyLaw::ModelAA(law),
-                    time_step,
-                }
-            }
-        })
-    };
-    let known = [
-        SS_MODEL_STATELESS,
-        SS_MODEL_AA,
-        SS_MODEL_AA_LUDING,
-        SS_MODEL_FRICTIONLESS,
-    ];
-    let known_hertz = [
-        SS_MODEL_HERTZ_FRICTIONLESS,
-        SS_MODEL_HERTZ_STATELESS,
-        SS_MODEL_HERTZ_AA,
-        SS_MODEL_HERTZ_AA_LUDING,
-    ];
-    let result = if known.contains(&p.model) {
-        built()
-    } else if known_hertz.contains(&p.model) {
-        hertz()
-    } else {
+    let Some(law) = AnyLaw::new(p) else {
         return Err((SS_ERR_UNKNOWN_MODEL, SS_PARAMETER_MODEL));
     };
-    result.map_err(|e| (parameter_code(e), rejected_parameter(e)))
+    let refused = |e| (parameter_code(e), rejected_parameter(e));
+    let law = law.map_err(refused)?;
+    let time_step = law.time_step(p).map_err(refused)?;
+    Ok(ss_law { law, time_step })
 }
 
 /// The stability limit of the law `*params` describes, for its smallest effective mass: what a
@@ -891,17 +758,7 @@ unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law
     let (Some(law), false) = (unsafe { law.as_ref() }, out.is_null()) else {
         return SS_ERR_NULL;
     };
-    let dt = law.time_step;
-    let bound = match law.law {
-        AnyLaw::Stateless(l) => AnyBound::Stateless(l.at(dt)),
-        AnyLaw::ModelAA(l) => AnyBound::ModelAA(l.at(dt)),
-        AnyLaw::ModelAALuding(l) => AnyBound::ModelAALuding(l.at(dt)),
-        AnyLaw::Frictionless(l) => AnyBound::Frictionless(l.at(dt)),
-        AnyLaw::HertzStateless(l) => AnyBound::HertzStateless(l.at(dt)),
-        AnyLaw::HertzAA(l) => AnyBound::HertzAA(l.at(dt)),
-        AnyLaw::HertzAALuding(l) => AnyBound::HertzAALuding(l.at(dt)),
-        AnyLaw::HertzFrictionless(l) => AnyBound::HertzFrictionless(l.at(dt)),
-    };
+    let bound = law.law.at(law.time_step);
     let handle = ss_bound_law { bound, wall: None };
     // SAFETY: out was checked non-null.
     unsafe { *out = Box::into_raw(Box::new(handle)) };
@@ -1506,13 +1363,7 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
     if !(m_star > F::ZERO && m_star.is_finite()) {
         return SS_ERR_NOT_POSITIVE;
     }
-    let hertz = [
-        SS_MODEL_HERTZ_FRICTIONLESS,
-        SS_MODEL_HERTZ_STATELESS,
-        SS_MODEL_HERTZ_AA,
-        SS_MODEL_HERTZ_AA_LUDING,
-    ];
-    let duration = if hertz.contains(&p.model) {
+    let duration = if hertz_family(p.model) {
         let largest = HertzImpact {
             speed: p.largest_impact_speed,
             effective_radius: p.largest_effective_radius,

@@ -9,19 +9,17 @@
 
 use soft_sphere::{
     Backup, CheckedSphere, ContactLaw, ContactList, ElasticMaterial, ElasticPlasticRolling, Float,
-    Frictionless, HertzImpact, HertzMicroSlip, HertzMixing, Interaction, Law, LinearMaterial,
-    LinearMixing, ListError, ListOutput, ListStats, Material, MaterialTable, MathBackend,
-    MicroSlip, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, Mixing, ModelAA,
-    ModelAALuding, NormalModel, ParameterError, Rotation, Sphere, SphereArrays, Stateless,
+    HertzImpact, HertzMicroSlip, HertzMixing, Interaction, Law, LinearMaterial, ListError,
+    ListOutput, ListStats, Material, MaterialTable, MathBackend, MicroSlip, MindlinAA,
+    MindlinParameters, Mixing, NormalModel, ParameterError, Rotation, Sphere, SphereArrays,
     TangentialModel, TimeStep, Vec3,
 };
 
+use crate::registry::{PlainTable, RolledTable, hertz_family};
 use crate::{
     Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_ERR_UNSTABLE_TIME_STEP, SS_MICROSLIP_SPRINGS,
-    SS_MODEL_AA, SS_MODEL_AA_LUDING, SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA,
-    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_MICROSLIP,
-    SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, SS_OK, SS_PARAMETER_NONE, contact_code,
-    forces_of, parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
+    SS_MODEL_HERTZ_MICROSLIP, SS_OK, SS_PARAMETER_NONE, contact_code, forces_of, parameter_code,
+    rejected_parameter, ss_forces, ss_sphere, ss_wall,
 };
 
 /// The most materials a table holds (LAMMPS atom types).
@@ -232,7 +230,7 @@ pub struct ss_table<F: Float> {
 
 /// One family's table.
 #[derive(Debug)]
-struct Tabled<F: Float, X: Mixing<F>> {
+pub(crate) struct Tabled<F: Float, X: Mixing<F>> {
     mixing: X,
     properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
     materials: usize,
@@ -300,12 +298,9 @@ impl<F, S> WallWork<F, S> {
     }
 }
 
-type Linear<F, T> = LinearMixing<F, T>;
-type Elastic<F, T> = HertzMixing<F, T>;
-
 /// A family's properties with the rolling coefficients beside them.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Rolling<P, F> {
+pub(crate) struct Rolling<P, F> {
     material: P,
     /// `mu_r`, `k_r`, `eta_r`.
     rolling: [F; 3],
@@ -314,9 +309,9 @@ struct Rolling<P, F> {
 /// A family's mixing rule with the elastic-plastic rolling resistance added to every law, its
 /// coefficients mixed by their geometric means, as the family's own.
 #[derive(Clone, Copy, Debug)]
-struct Rolled<X, F> {
-    mixing: X,
-    smallest_inertia: F,
+pub(crate) struct Rolled<X, F> {
+    pub(crate) mixing: X,
+    pub(crate) smallest_inertia: F,
 }
 
 impl<F, X, N, T, M, R> Mixing<F> for Rolled<X, F>
@@ -350,7 +345,7 @@ fn rolling_of<F: Float>(c: &ss_coefficients<F>) -> [F; 3] {
     [c.rolling_friction, c.rolling_stiffness, c.rolling_damping]
 }
 
-fn rolled_linear<F: Float>(
+pub(crate) fn rolled_linear<F: Float>(
     c: &ss_coefficients<F>,
 ) -> Result<Rolling<LinearMaterial<F>, F>, ParameterError> {
     Ok(Rolling {
@@ -359,7 +354,7 @@ fn rolled_linear<F: Float>(
     })
 }
 
-fn rolled_elastic<F: Float>(
+pub(crate) fn rolled_elastic<F: Float>(
     c: &ss_coefficients<F>,
 ) -> Result<Rolling<ElasticMaterial<F>, F>, ParameterError> {
     Ok(Rolling {
@@ -387,54 +382,31 @@ impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
     }
 }
 
-type RolledLinear<F, T> = Rolled<LinearMixing<F, T>, F>;
-type RolledElastic<F, T> = Rolled<HertzMixing<F, T>, F>;
-
+/// A table of the registry's laws (`registry.rs`), with or without rolling resistance, or of
+/// micro-slip.
 #[derive(Debug)]
 enum AnyTable<F: Float> {
-    Stateless(Box<Tabled<F, Linear<F, Stateless<F>>>>),
-    ModelAA(Box<Tabled<F, Linear<F, ModelAA<F>>>>),
-    ModelAALuding(Box<Tabled<F, Linear<F, ModelAALuding<F>>>>),
-    Frictionless(Box<Tabled<F, Linear<F, Frictionless>>>),
-    HertzStateless(Box<Tabled<F, Elastic<F, MindlinStateless<F>>>>),
-    HertzAA(Box<Tabled<F, Elastic<F, MindlinAA<F>>>>),
-    HertzAALuding(Box<Tabled<F, Elastic<F, MindlinAALuding<F>>>>),
-    HertzFrictionless(Box<Tabled<F, Elastic<F, Frictionless>>>),
-    RolledStateless(Box<Tabled<F, RolledLinear<F, Stateless<F>>>>),
-    RolledAA(Box<Tabled<F, RolledLinear<F, ModelAA<F>>>>),
-    RolledAALuding(Box<Tabled<F, RolledLinear<F, ModelAALuding<F>>>>),
-    RolledHertzStateless(Box<Tabled<F, RolledElastic<F, MindlinStateless<F>>>>),
-    RolledHertzAA(Box<Tabled<F, RolledElastic<F, MindlinAA<F>>>>),
-    RolledHertzAALuding(Box<Tabled<F, RolledElastic<F, MindlinAALuding<F>>>>),
-    HertzMicroSlip(Box<Tabled<F, MicroSlipMixing<F>>>),
-    RolledHertzMicroSlip(Box<Tabled<F, Rolled<MicroSlipMixing<F>, F>>>),
+    Plain(PlainTable<F>),
+    Rolled(RolledTable<F>),
+    MicroSlip(Box<Tabled<F, MicroSlipMixing<F>>>),
+    RolledMicroSlip(Box<Tabled<F, Rolled<MicroSlipMixing<F>, F>>>),
 }
 
-/// `$body` with `$t` bound to the family's table inside an [`AnyTable`].
+/// `$body` with `$t` bound to the table inside an [`AnyTable`].
 macro_rules! each_table {
     ($any:expr, $t:pat => $body:expr) => {
         match $any {
-            AnyTable::Stateless($t) => $body,
-            AnyTable::ModelAA($t) => $body,
-            AnyTable::ModelAALuding($t) => $body,
-            AnyTable::Frictionless($t) => $body,
-            AnyTable::HertzStateless($t) => $body,
-            AnyTable::HertzAA($t) => $body,
-            AnyTable::HertzAALuding($t) => $body,
-            AnyTable::HertzFrictionless($t) => $body,
-            AnyTable::RolledStateless($t) => $body,
-            AnyTable::RolledAA($t) => $body,
-            AnyTable::RolledAALuding($t) => $body,
-            AnyTable::RolledHertzStateless($t) => $body,
-            AnyTable::RolledHertzAA($t) => $body,
-            AnyTable::RolledHertzAALuding($t) => $body,
-            AnyTable::HertzMicroSlip($t) => $body,
-            AnyTable::RolledHertzMicroSlip($t) => $body,
+            AnyTable::Plain(plain) => each_table_of!(plain, PlainTable, $t => $body),
+            AnyTable::Rolled(rolled) => each_table_of!(rolled, RolledTable, $t => $body),
+            AnyTable::MicroSlip($t) => $body,
+            AnyTable::RolledMicroSlip($t) => $body,
         }
     };
 }
 
-fn linear<F: Float>(c: &ss_coefficients<F>) -> Result<LinearMaterial<F>, ParameterError> {
+pub(crate) fn linear<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<LinearMaterial<F>, ParameterError> {
     Ok(LinearMaterial {
         normal_stiffness: c.normal_stiffness,
         restitution: c.restitution,
@@ -445,7 +417,7 @@ fn linear<F: Float>(c: &ss_coefficients<F>) -> Result<LinearMaterial<F>, Paramet
 }
 
 /// A frictionless law reads no tangential coefficient: valid placeholders stand in for them.
-fn linear_frictionless<F: Float>(
+pub(crate) fn linear_frictionless<F: Float>(
     c: &ss_coefficients<F>,
 ) -> Result<LinearMaterial<F>, ParameterError> {
     Ok(LinearMaterial {
@@ -456,7 +428,9 @@ fn linear_frictionless<F: Float>(
     })
 }
 
-fn elastic<F: Float>(c: &ss_coefficients<F>) -> Result<ElasticMaterial<F>, ParameterError> {
+pub(crate) fn elastic<F: Float>(
+    c: &ss_coefficients<F>,
+) -> Result<ElasticMaterial<F>, ParameterError> {
     Ok(ElasticMaterial {
         elasticity: Material::new(c.youngs_modulus, c.poisson_ratio)?,
         restitution: c.restitution,
@@ -465,7 +439,7 @@ fn elastic<F: Float>(c: &ss_coefficients<F>) -> Result<ElasticMaterial<F>, Param
     })
 }
 
-fn elastic_frictionless<F: Float>(
+pub(crate) fn elastic_frictionless<F: Float>(
     c: &ss_coefficients<F>,
 ) -> Result<ElasticMaterial<F>, ParameterError> {
     Ok(ElasticMaterial {
@@ -479,7 +453,7 @@ impl<F: Float, X: Mixing<F>> Tabled<F, X>
 where
     <X::Law as Law>::State: Flat<F>,
 {
-    fn new(
+    pub(crate) fn new(
         mixing: X,
         properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
         materials: usize,
@@ -1164,7 +1138,7 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
         speed: config.largest_impact_speed,
         effective_radius: config.largest_effective_radius,
     };
-    let hertz = (SS_MODEL_HERTZ_FRICTIONLESS..=SS_MODEL_HERTZ_MICROSLIP).contains(&config.model);
+    let hertz = config.model == SS_MODEL_HERTZ_MICROSLIP || hertz_family(config.model);
     if hertz {
         // The declared impact is checked by the Hertz law: probe it with a valid material.
         let probe = ElasticMaterial {
@@ -1191,40 +1165,12 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
         SS_ROLLING_EPSD => return rolled_table(config, impact, micro_slip),
         _ => return Err(SS_ERR_UNKNOWN_MODEL),
     }
-    Ok(match config.model {
-        SS_MODEL_STATELESS => {
-            AnyTable::Stateless(Tabled::new(LinearMixing::new(Stateless), linear, m))
-        }
-        SS_MODEL_AA => AnyTable::ModelAA(Tabled::new(LinearMixing::new(ModelAA), linear, m)),
-        SS_MODEL_AA_LUDING => {
-            AnyTable::ModelAALuding(Tabled::new(LinearMixing::new(ModelAALuding), linear, m))
-        }
-        SS_MODEL_FRICTIONLESS => AnyTable::Frictionless(Tabled::new(
-            LinearMixing::new(|_| Frictionless),
-            linear_frictionless,
-            m,
-        )),
-        SS_MODEL_HERTZ_STATELESS => AnyTable::HertzStateless(Tabled::new(
-            HertzMixing::new(impact, MindlinStateless),
-            elastic,
-            m,
-        )),
-        SS_MODEL_HERTZ_AA => {
-            AnyTable::HertzAA(Tabled::new(HertzMixing::new(impact, MindlinAA), elastic, m))
-        }
-        SS_MODEL_HERTZ_AA_LUDING => AnyTable::HertzAALuding(Tabled::new(
-            HertzMixing::new(impact, MindlinAALuding),
-            elastic,
-            m,
-        )),
-        SS_MODEL_HERTZ_FRICTIONLESS => AnyTable::HertzFrictionless(Tabled::new(
-            HertzMixing::new(impact, |_| Frictionless),
-            elastic_frictionless,
-            m,
-        )),
-        SS_MODEL_HERTZ_MICROSLIP => AnyTable::HertzMicroSlip(Tabled::new(micro_slip, elastic, m)),
-        _ => return Err(SS_ERR_UNKNOWN_MODEL),
-    })
+    if config.model == SS_MODEL_HERTZ_MICROSLIP {
+        return Ok(AnyTable::MicroSlip(Tabled::new(micro_slip, elastic, m)));
+    }
+    PlainTable::new(config.model, impact, m)
+        .map(AnyTable::Plain)
+        .ok_or(SS_ERR_UNKNOWN_MODEL)
 }
 
 /// A table of laws with the elastic-plastic rolling resistance (the smallest inertia checked
@@ -1237,65 +1183,20 @@ fn rolled_table<F: Float>(
     let (m, smallest_inertia) = (config.materials, config.smallest_inertia);
     ElasticPlasticRolling::new(F::ZERO, F::ONE, F::ZERO, smallest_inertia)
         .map_err(parameter_code)?;
-    Ok(match config.model {
-        SS_MODEL_STATELESS => AnyTable::RolledStateless(Tabled::new(
-            Rolled {
-                mixing: LinearMixing::new(Stateless),
-                smallest_inertia,
-            },
-            rolled_linear,
-            m,
-        )),
-        SS_MODEL_AA => AnyTable::RolledAA(Tabled::new(
-            Rolled {
-                mixing: LinearMixing::new(ModelAA),
-                smallest_inertia,
-            },
-            rolled_linear,
-            m,
-        )),
-        SS_MODEL_AA_LUDING => AnyTable::RolledAALuding(Tabled::new(
-            Rolled {
-                mixing: LinearMixing::new(ModelAALuding),
-                smallest_inertia,
-            },
-            rolled_linear,
-            m,
-        )),
-        SS_MODEL_HERTZ_STATELESS => AnyTable::RolledHertzStateless(Tabled::new(
-            Rolled {
-                mixing: HertzMixing::new(impact, MindlinStateless),
-                smallest_inertia,
-            },
+    if config.model == SS_MODEL_HERTZ_MICROSLIP {
+        let rolled = Rolled {
+            mixing: micro_slip,
+            smallest_inertia,
+        };
+        return Ok(AnyTable::RolledMicroSlip(Tabled::new(
+            rolled,
             rolled_elastic,
             m,
-        )),
-        SS_MODEL_HERTZ_AA => AnyTable::RolledHertzAA(Tabled::new(
-            Rolled {
-                mixing: HertzMixing::new(impact, MindlinAA),
-                smallest_inertia,
-            },
-            rolled_elastic,
-            m,
-        )),
-        SS_MODEL_HERTZ_AA_LUDING => AnyTable::RolledHertzAALuding(Tabled::new(
-            Rolled {
-                mixing: HertzMixing::new(impact, MindlinAALuding),
-                smallest_inertia,
-            },
-            rolled_elastic,
-            m,
-        )),
-        SS_MODEL_HERTZ_MICROSLIP => AnyTable::RolledHertzMicroSlip(Tabled::new(
-            Rolled {
-                mixing: micro_slip,
-                smallest_inertia,
-            },
-            rolled_elastic,
-            m,
-        )),
-        _ => return Err(SS_ERR_UNKNOWN_MODEL),
-    })
+        )));
+    }
+    RolledTable::new(config.model, impact, m, smallest_inertia)
+        .map(AnyTable::Rolled)
+        .ok_or(SS_ERR_UNKNOWN_MODEL)
 }
 
 /// # Safety

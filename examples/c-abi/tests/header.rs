@@ -3,8 +3,8 @@
 //!
 //! The f32 and f64 entry points are written once, as the `entry_points!` macro; cbindgen does not
 //! expand macros, so this test expands its invocations (a plain substitution of the macro's
-//! parameters) and hands cbindgen the source with the expansions appended. The table module's
-//! types join the crate root's, as one file.
+//! parameters) and hands cbindgen the source with the expansions appended. The modules' items
+//! join the crate root's, as one file.
 
 use std::path::PathBuf;
 
@@ -46,19 +46,36 @@ fn header_is_current() {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).unwrap();
     let root = std::fs::read_to_string(crate_dir.join("src/lib.rs")).unwrap();
-    let table = std::fs::read_to_string(crate_dir.join("src/table.rs")).unwrap();
-    // One file: the module's declaration and re-export dropped, its paths made local.
-    let root = root.replace("pub mod table;", "");
-    let (before, after) = root
-        .split_once("pub use table::{")
-        .expect("the table re-export");
-    let root = format!("{before}{}", after.split_once("};").unwrap().1);
-    let table: String = table
-        .lines()
-        .filter(|line| !line.starts_with("//!"))
-        .map(|line| format!("{line}\n"))
-        .collect();
-    let source = format!("{root}\n{}", table.replace("table::", ""));
+    // One file: the modules' declarations and re-exports dropped, their paths made local.
+    let mut root = root
+        .replace("#[macro_use]\nmod registry;", "")
+        .replace("mod names;", "")
+        .replace("pub mod table;", "");
+    for module in ["table", "names"] {
+        let (before, after) = root
+            .split_once(&format!("pub use {module}::{{"))
+            .expect("the module's re-export");
+        root = format!("{before}{}", after.split_once("};").unwrap().1);
+    }
+    let mut source = root;
+    for module in ["table", "names"] {
+        let text = std::fs::read_to_string(crate_dir.join(format!("src/{module}.rs"))).unwrap();
+        let text: String = text
+            .lines()
+            .filter(|line| !line.starts_with("//!"))
+            .map(|line| format!("{line}\n"))
+            .collect();
+        // The crate's own imports name nothing cbindgen needs (a `use` ends at its `;`).
+        let mut text = text.as_str();
+        let mut kept = String::new();
+        while let Some((before, after)) = text.split_once("\nuse crate") {
+            kept.push_str(before);
+            text = after.split_once(';').expect("the use's end").1;
+        }
+        kept.push_str(text);
+        let text = kept;
+        source = format!("{source}\n{}", text.replace("table::", ""));
+    }
     let scratch = std::env::temp_dir().join(format!("soft_sphere_ffi_{}.rs", std::process::id()));
     std::fs::write(&scratch, expanded(&source)).unwrap();
     let mut generated = Vec::new();
@@ -91,6 +108,9 @@ fn header_is_current() {
         "ss_table_evaluate_f32",
         "ss_neighbours",
         "ss_history_f64",
+        "ss_model_of_name",
+        "ss_parameter_name",
+        "SS_PARAMETER_INERTIA",
     ] {
         assert!(
             generated.contains(symbol),

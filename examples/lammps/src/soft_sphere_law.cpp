@@ -12,45 +12,26 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-struct Named {
-  const char *name;
-  int model;
-};
-const Named LAWS[] = {
-    {"aa", SS_MODEL_AA},
-    {"aa/luding", SS_MODEL_AA_LUDING},
-    {"stateless", SS_MODEL_STATELESS},
-    {"frictionless", SS_MODEL_FRICTIONLESS},
-    {"hertz/aa", SS_MODEL_HERTZ_AA},
-    {"hertz/aa/luding", SS_MODEL_HERTZ_AA_LUDING},
-    {"hertz/stateless", SS_MODEL_HERTZ_STATELESS},
-    {"hertz/frictionless", SS_MODEL_HERTZ_FRICTIONLESS},
-};
-}    // namespace
-
 int SoftSphere::model(LAMMPS *lmp, const std::string &style, const std::string &law)
 {
-  for (const Named &named : LAWS)
-    if (law == named.name) return named.model;
-  lmp->error->all(FLERR,
-                  "{}: unknown law '{}' (one of aa, aa/luding, stateless, frictionless, "
-                  "hertz/aa, hertz/aa/luding, hertz/stateless, hertz/frictionless)",
-                  style, law);
+  int32_t model = -1;
+  if (ss_model_of_name(law.c_str(), &model) == SS_OK) return model;
+  std::string names;
+  for (size_t k = 0; k < ss_model_count(); k++)
+    names += std::string(k == 0 ? "" : ", ") + ss_model_name(ss_model_code(k));
+  lmp->error->all(FLERR, "{}: unknown law '{}' (one of {})", style, law, names);
   return -1;
 }
 
 bool SoftSphere::hertz(int model)
 {
-  return model == SS_MODEL_HERTZ_AA || model == SS_MODEL_HERTZ_AA_LUDING ||
-      model == SS_MODEL_HERTZ_STATELESS || model == SS_MODEL_HERTZ_FRICTIONLESS;
+  return ss_model_is_hertz(model) == 1;
 }
 
 const char *SoftSphere::law_name(int model)
 {
-  for (const Named &named : LAWS)
-    if (named.model == model) return named.name;
-  return "?";
+  const char *name = ss_model_name(model);
+  return name ? name : "?";
 }
 
 ss_coefficients_f64 SoftSphere::coefficients(LAMMPS *lmp, int model, char **arg)
@@ -120,64 +101,12 @@ ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f
 
 const char *SoftSphere::parameter_name(int parameter, int model)
 {
-  switch (parameter) {
-    case SS_PARAMETER_NORMAL_STIFFNESS:
-      return "k_n (normal stiffness)";
-    case SS_PARAMETER_RESTITUTION:
-      return "e (restitution)";
-    case SS_PARAMETER_TANGENTIAL_STIFFNESS:
-      return "k_t (tangential stiffness)";
-    case SS_PARAMETER_DASHPOT_RATIO:
-      return "eta_ratio (tangential over normal dashpot)";
-    case SS_PARAMETER_FRICTION:
-      return "mu (friction)";
-    case SS_PARAMETER_TIME_STEP:
-      return "the time step";
-    case SS_PARAMETER_MASS:
-      return "the smallest atom mass";
-    case SS_PARAMETER_MODULUS:
-      return hertz(model) ? "E (Young's modulus)" : "the modulus";
-    case SS_PARAMETER_POISSON_RATIO:
-      return "nu (Poisson's ratio)";
-    case SS_PARAMETER_SPEED:
-      return "the impact speed (pair_style soft/sphere impact V)";
-    case SS_PARAMETER_RADIUS:
-      return "the largest radius";
-    case SS_PARAMETER_ROLLING_FRICTION:
-      return "mu_r (rolling friction)";
-    case SS_PARAMETER_ROLLING_STIFFNESS:
-      return "k_r (rolling stiffness)";
-    case SS_PARAMETER_ROLLING_DAMPING:
-      return "eta_r (rolling dashpot)";
-    case SS_PARAMETER_WALL:
-      return "the wall";
-    case SS_PARAMETER_DAMPING_FACTOR:
-      return "alpha (Hertz damping factor)";
-    case SS_PARAMETER_INERTIA:
-      return "the smallest moment of inertia";
-    default:
-      return "the law";
-  }
+  return ss_parameter_name(parameter, model);
 }
 
 const char *SoftSphere::parameter_error(int code)
 {
-  switch (code) {
-    case SS_ERR_NON_FINITE_PARAMETER:
-      return "is not finite";
-    case SS_ERR_NOT_POSITIVE:
-      return "must be positive";
-    case SS_ERR_NEGATIVE:
-      return "must not be negative";
-    case SS_ERR_RESTITUTION:
-      return "must lie in [0, 1]";
-    case SS_ERR_POISSON_RATIO:
-      return "must lie in (-1, 0.5]";
-    case SS_ERR_UNSTABLE_TIME_STEP:
-      return "is at or past the stability limit";
-    default:
-      return "is invalid";
-  }
+  return ss_parameter_error_text(code);
 }
 
 ss_law_f64 *SoftSphere::build(LAMMPS *lmp, const std::string &style, ss_params_f64 params,
@@ -234,31 +163,5 @@ double SoftSphere::largest_radius(LAMMPS *lmp)
 
 const char *SoftSphere::contact_error(int code)
 {
-  switch (code) {
-    case SS_ERR_NON_FINITE_INPUT:
-      return "a position, velocity, radius or mass is not finite";
-    case SS_ERR_NON_POSITIVE_RADIUS:
-      return "a radius is not positive";
-    case SS_ERR_NON_POSITIVE_MASS:
-      return "a mass is not positive";
-    case SS_ERR_COINCIDENT_CENTRES:
-      return "the two centres coincide";
-    case SS_ERR_NON_FINITE_RESULT:
-      return "the contact force overflowed";
-    case SS_ERR_PAST_STABLE_STEP:
-      return "the contact is stiffer than the time step was checked for (unstable: shorten "
-             "the timestep, or for a Hertz law declare a faster impact)";
-    case SS_ERR_LENGTH:
-      return "a neighbour count or the history size is wrong";
-    case SS_ERR_INDEX:
-      return "a neighbour index is past the atoms";
-    case SS_ERR_MATERIAL:
-      return "an atom type is past the pair style's types";
-    case SS_ERR_NULL:
-      return "an array is missing";
-    case SS_ERR_NOT_PREPARED:
-      return "the pair style was not initialised";
-    default:
-      return "the contact was rejected";
-  }
+  return ss_contact_error_text(code);
 }

@@ -1,0 +1,299 @@
+//! The laws the C ABI offers, listed once in [`with_laws!`]: the handles' enums ([`AnyLaw`],
+//! [`AnyBound`], the tables' [`PlainTable`] and [`RolledTable`]), every dispatch over them
+//! (`each_law!`, `each_plain!`, `each_rolled!`), the constructors from `ss_params` and from a
+//! table's configuration, the Hertz family's codes and the names a host shows
+//! (`ss_model_name`, `ss_model_of_name`, which the LAMMPS plugin reads) all follow from it.
+//! Adding a law: its `SS_MODEL_*` constant (the header is generated from constants), then one
+//! entry here. Micro-slip is the one law outside it: its state does not fit `ss_state`, so only
+//! the tables take it (`table.rs`).
+
+use soft_sphere::{
+    BoundLaw, ContactLaw, Float, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
+    LinearSpringDashpot, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelAA,
+    ModelAALuding, ParameterError, Stateless, TangentialParameters, TimeStep,
+};
+
+use crate::table::{Rolled, Tabled, elastic, elastic_frictionless, linear, linear_frictionless};
+use crate::table::{rolled_elastic, rolled_linear};
+use crate::{
+    SS_MODEL_AA, SS_MODEL_AA_LUDING, SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA,
+    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_STATELESS,
+    SS_MODEL_STATELESS, ss_params,
+};
+
+/// Calls `$callback!` with every law, one entry each:
+/// `Variant = SS_MODEL_CODE, "name", family, TangentialSlot, tangential;` where the family is
+/// `linear` (the linear spring-dashpot, `TangentialParameters`) or `hertz` (Hertz,
+/// `MindlinParameters`), and `tangential` makes the slot from the family's parameters (a tuple
+/// struct's name) or is `frictionless` (no tangential parameters are read).
+macro_rules! with_laws {
+    ($callback:ident ! $($d:tt)?) => {
+        $callback! { $($d)?
+            Stateless = SS_MODEL_STATELESS, "stateless", linear, Stateless<F>, Stateless;
+            ModelAA = SS_MODEL_AA, "aa", linear, ModelAA<F>, ModelAA;
+            ModelAALuding = SS_MODEL_AA_LUDING, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
+            Frictionless = SS_MODEL_FRICTIONLESS, "frictionless", linear, Frictionless, frictionless;
+            HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS, "hertz/frictionless", hertz, Frictionless, frictionless;
+            HertzStateless = SS_MODEL_HERTZ_STATELESS, "hertz/stateless", hertz, MindlinStateless<F>, MindlinStateless;
+            HertzAA = SS_MODEL_HERTZ_AA, "hertz/aa", hertz, MindlinAA<F>, MindlinAA;
+            HertzAALuding = SS_MODEL_HERTZ_AA_LUDING, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
+        }
+    };
+}
+
+/// Each family's law and mixing rule for a tangential slot `T`, named by the family.
+mod family {
+    /// The linear spring-dashpot.
+    pub(crate) mod linear {
+        /// The law.
+        pub(crate) type Law<F, T> =
+            soft_sphere::ContactLaw<F, soft_sphere::LinearSpringDashpot<F>, T>;
+        /// The mixing rule.
+        pub(crate) type Mixing<F, T> = soft_sphere::LinearMixing<F, T>;
+    }
+    /// Hertz.
+    pub(crate) mod hertz {
+        /// The law.
+        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<F, soft_sphere::Hertz<F>, T>;
+        /// The mixing rule.
+        pub(crate) type Mixing<F, T> = soft_sphere::HertzMixing<F, T>;
+    }
+}
+
+/// The law of a family and tangential constructor, from `ss_params`.
+macro_rules! law_of {
+    ($p:expr, linear, frictionless) => {
+        linear_normal($p).map(|normal| ContactLaw::new(normal, Frictionless))
+    };
+    ($p:expr, linear, $make:ident) => {
+        linear_normal($p)
+            .and_then(|normal| Ok(ContactLaw::new(normal, $make(linear_tangential($p)?))))
+    };
+    ($p:expr, hertz, frictionless) => {
+        hertz_normal($p).map(|normal| ContactLaw::new(normal, Frictionless))
+    };
+    ($p:expr, hertz, $make:ident) => {
+        hertz_normal($p).and_then(|normal| Ok(ContactLaw::new(normal, $make(mindlin($p)?))))
+    };
+}
+
+/// The mixing rule of a family and tangential constructor.
+macro_rules! mixing_of {
+    ($impact:expr, linear, frictionless) => {
+        LinearMixing::new(|_| Frictionless)
+    };
+    ($impact:expr, linear, $make:ident) => {
+        LinearMixing::new($make)
+    };
+    ($impact:expr, hertz, frictionless) => {
+        HertzMixing::new($impact, |_| Frictionless)
+    };
+    ($impact:expr, hertz, $make:ident) => {
+        HertzMixing::new($impact, $make)
+    };
+}
+
+/// How a table of a family reads a material's coefficients.
+macro_rules! properties_of {
+    (linear, frictionless) => {
+        linear_frictionless
+    };
+    (linear, $make:ident) => {
+        linear
+    };
+    (hertz, frictionless) => {
+        elastic_frictionless
+    };
+    (hertz, $make:ident) => {
+        elastic
+    };
+}
+
+/// How a table of a family reads a material's coefficients with the rolling ones.
+macro_rules! rolled_properties_of {
+    (linear) => {
+        rolled_linear
+    };
+    (hertz) => {
+        rolled_elastic
+    };
+}
+
+/// Whether the family is Hertz's.
+macro_rules! is_hertz {
+    (linear) => {
+        false
+    };
+    (hertz) => {
+        true
+    };
+}
+
+/// Whether a law has friction (the rolling resistance needs it).
+macro_rules! rolls {
+    (frictionless) => {
+        false
+    };
+    ($make:ident) => {
+        true
+    };
+}
+
+/// The enums, constructors and names, from the list.
+macro_rules! registry {
+    ($d:tt $($variant:ident = $code:ident, $name:literal, $family:ident, $t:ty, $make:ident;)*) => {
+        /// Which law a handle holds.
+        #[derive(Clone, Copy, Debug)]
+        pub(crate) enum AnyLaw<F: Float> {
+            $(
+                #[doc = $name]
+                $variant(family::$family::Law<F, $t>),
+            )*
+        }
+
+        /// Which law a bound handle holds: a copy of the law, bound to its time step.
+        #[derive(Debug)]
+        pub(crate) enum AnyBound<F: Float> {
+            $(
+                #[doc = $name]
+                $variant(BoundLaw<family::$family::Law<F, $t>>),
+            )*
+        }
+
+        /// A material table of each law.
+        #[derive(Debug)]
+        pub(crate) enum PlainTable<F: Float> {
+            $(
+                #[doc = $name]
+                $variant(Box<Tabled<F, family::$family::Mixing<F, $t>>>),
+            )*
+        }
+
+        /// A material table of each law with the elastic-plastic rolling resistance.
+        #[derive(Debug)]
+        pub(crate) enum RolledTable<F: Float> {
+            $(
+                #[doc = $name]
+                $variant(Box<Tabled<F, Rolled<family::$family::Mixing<F, $t>, F>>>),
+            )*
+        }
+
+        /// `$body` with `$law` bound to the law inside an [`AnyLaw`] or an [`AnyBound`],
+        /// whichever it is (each arm is compiled for its own law type).
+        macro_rules! each_law {
+            ($d any:expr, $d kind:ident, $d law:pat => $d body:expr) => {
+                match $d any {
+                    $( $d kind::$variant($d law) => $d body, )*
+                }
+            };
+        }
+
+        /// `$body` with `$t` bound to the table inside a [`PlainTable`] or a [`RolledTable`].
+        macro_rules! each_table_of {
+            ($d any:expr, $d kind:ident, $d table:pat => $d body:expr) => {
+                match $d any {
+                    $( $d kind::$variant($d table) => $d body, )*
+                }
+            };
+        }
+
+        impl<F: Float> AnyLaw<F> {
+            /// The law `p` describes, before its time step is checked; `None` for a code the
+            /// list does not hold.
+            pub(crate) fn new(p: &ss_params<F>) -> Option<Result<Self, ParameterError>> {
+                Some(match p.model {
+                    $( $code => law_of!(p, $family, $make).map(Self::$variant), )*
+                    _ => return None,
+                })
+            }
+
+            /// The law checked at the time step `p` declares.
+            pub(crate) fn time_step(&self, p: &ss_params<F>) -> Result<TimeStep<F>, ParameterError> {
+                each_law!(self, AnyLaw, l => l.time_step(p.time_step, p.smallest_effective_mass))
+            }
+
+            /// The law bound to `time_step`.
+            pub(crate) fn at(&self, time_step: TimeStep<F>) -> AnyBound<F> {
+                match self {
+                    $( Self::$variant(l) => AnyBound::$variant(l.at(time_step)), )*
+                }
+            }
+        }
+
+        impl<F: Float> PlainTable<F> {
+            /// A table of `materials` materials of the law `model` names; `None` for a code
+            /// the list does not hold.
+            pub(crate) fn new(model: i32, impact: HertzImpact<F>, materials: usize) -> Option<Self> {
+                Some(match model {
+                    $( $code => Self::$variant(Tabled::new(
+                        mixing_of!(impact, $family, $make),
+                        properties_of!($family, $make),
+                        materials,
+                    )), )*
+                    _ => return None,
+                })
+            }
+        }
+
+        impl<F: Float> RolledTable<F> {
+            /// As [`PlainTable::new`], with the rolling resistance checked for
+            /// `smallest_inertia`; `None` also for a frictionless law (nothing to roll
+            /// against).
+            pub(crate) fn new(
+                model: i32,
+                impact: HertzImpact<F>,
+                materials: usize,
+                smallest_inertia: F,
+            ) -> Option<Self> {
+                Some(match model {
+                    $( $code if rolls!($make) => Self::$variant(Tabled::new(
+                        Rolled { mixing: mixing_of!(impact, $family, $make), smallest_inertia },
+                        rolled_properties_of!($family),
+                        materials,
+                    )), )*
+                    _ => return None,
+                })
+            }
+        }
+
+        /// Whether `model` is a law of Hertz's family (its parameters are moduli and a declared
+        /// impact).
+        pub(crate) fn hertz_family(model: i32) -> bool {
+            match model {
+                $( $code => is_hertz!($family), )*
+                _ => false,
+            }
+        }
+
+        /// Every law's code and name, in the list's order.
+        pub(crate) const NAMES: &[(i32, &str)] = &[ $( ($code, concat!($name, "\0")), )* ];
+    };
+}
+
+with_laws!(registry!$);
+
+/// The linear normal law of `p`.
+fn linear_normal<F: Float>(p: &ss_params<F>) -> Result<LinearSpringDashpot<F>, ParameterError> {
+    LinearSpringDashpot::new(p.normal_stiffness, p.restitution)
+}
+
+/// The linear tangential parameters of `p`.
+fn linear_tangential<F: Float>(
+    p: &ss_params<F>,
+) -> Result<TangentialParameters<F>, ParameterError> {
+    TangentialParameters::new(p.tangential_stiffness, p.dashpot_ratio, p.friction)
+}
+
+/// Hertz's normal law of `p`, checked for its declared impact.
+fn hertz_normal<F: Float>(p: &ss_params<F>) -> Result<Hertz<F>, ParameterError> {
+    let largest = HertzImpact {
+        speed: p.largest_impact_speed,
+        effective_radius: p.largest_effective_radius,
+    };
+    Hertz::new(p.effective_modulus, p.restitution, largest)
+}
+
+/// Mindlin's tangential parameters of `p`.
+fn mindlin<F: Float>(p: &ss_params<F>) -> Result<MindlinParameters<F>, ParameterError> {
+    MindlinParameters::new(p.effective_shear_modulus, p.dashpot_ratio, p.friction)
+}
