@@ -18,7 +18,10 @@
 //! [`MicroSlip`]), rolling resistance ([`NoRolling`] by default, [`ConstantRolling`],
 //! [`ElasticPlasticRolling`]), a math backend ([`Libm`] by default, [`Micromath`] for
 //! fast approximate `f32`) and rotation ([`Rotating`] by default, [`NonRotating`]). A frictionless
-//! or non-rotating law computes no slip velocity, tangential force or torque at all.
+//! or non-rotating law computes no slip velocity, tangential force or torque at all. The common
+//! laws have names: [`LinearAA`], [`LinearAALuding`], [`LinearStateless`],
+//! [`LinearFrictionless`], [`HertzAA`], [`HertzAALuding`], [`HertzStateless`],
+//! [`HertzFrictionless`], [`HertzMicroSlip`].
 //!
 //! ```
 //! use soft_sphere::{
