@@ -157,3 +157,31 @@ fn matched_tangential_damping_is_mindlins_stiffness_ratio() {
         );
     }
 }
+
+/// `docs/validation.md` quotes the table of tolerances as the code holds it.
+/// `UPDATE_DOCS=1 cargo test -p host-tests --test validation tolerances` rewrites the quote.
+#[test]
+fn tolerances_are_quoted_as_the_code_holds_them() {
+    use host_tests::validation::precision;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/validation.md");
+    let doc = std::fs::read_to_string(&path).unwrap();
+    let (start, end) = (
+        "<!-- tolerances: precision.rs -->\n",
+        "<!-- end of tolerances -->",
+    );
+    let (before, rest) = doc.split_once(start).expect("the quote's start marker");
+    let (quoted, after) = rest.split_once(end).expect("the quote's end marker");
+    let table = precision::markdown();
+    if std::env::var_os("UPDATE_DOCS").is_some() {
+        std::fs::write(&path, format!("{before}{start}{table}{end}{after}")).unwrap();
+    } else {
+        assert_eq!(
+            quoted, table,
+            "docs/validation.md quotes a stale table: run with UPDATE_DOCS=1"
+        );
+    }
+    // Every bound is positive and finite.
+    for t in precision::TOLERANCES {
+        assert!(t.bound > 0.0 && t.bound.is_finite(), "{t:?}");
+    }
+}

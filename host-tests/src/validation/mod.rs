@@ -6,6 +6,7 @@ pub mod chung_ooi;
 pub mod kharaz;
 pub mod normal;
 pub mod plate;
+pub mod precision;
 pub mod rolling;
 pub mod table;
 
