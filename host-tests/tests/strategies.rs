@@ -142,7 +142,7 @@ fn velocities_and_spins_fill_their_range_both_ways() {
     let components = |pick: fn(&Collision) -> [f64; 3]| {
         collisions
             .iter()
-            .flat_map(move |c| pick(c))
+            .flat_map(pick)
             .collect::<Vec<f64>>()
     };
     for (what, values) in [
