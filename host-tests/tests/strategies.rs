@@ -139,12 +139,8 @@ fn unit_vectors_are_uniform_on_the_sphere() {
 #[test]
 fn velocities_and_spins_fill_their_range_both_ways() {
     let collisions = draws(collision(), 2000);
-    let components = |pick: fn(&Collision) -> [f64; 3]| {
-        collisions
-            .iter()
-            .flat_map(pick)
-            .collect::<Vec<f64>>()
-    };
+    let components =
+        |pick: fn(&Collision) -> [f64; 3]| collisions.iter().flat_map(pick).collect::<Vec<f64>>();
     for (what, values) in [
         ("velocity", components(|c| c.first.velocity)),
         ("spin", components(|c| c.second.spin_speed)),

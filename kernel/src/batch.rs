@@ -1,9 +1,9 @@
-//! The batch path: `N` sphere-sphere contacts evaluated together, in structure-of-arrays form,
+//! The batch path: `WIDTH` sphere-sphere contacts evaluated together, in structure-of-arrays form,
 //! the same bits as evaluating them one at a time.
 //!
 //! A contact is a serial chain of roots and divisions; one at a time it leaves most of a vector
-//! unit idle. A block of `N` contacts (`N` the vector width: [`LANES`]) runs the same straight-line
-//! computation on every lane and keeps, per lane, what the one-contact path would have returned:
+//! unit idle. A block of `WIDTH` contacts (`WIDTH` the vector width: [`LANES`]) runs the same
+//! straight-line computation on every lane and keeps, per lane, what the one-contact path would have returned:
 //! the forces where the pair touches, a reset state where it is apart, the unchanged state and the
 //! same [`ContactError`] where its input is bad. Nothing branches on a lane's data, so the compiler
 //! can put the lanes side by side in vector registers; with a backend whose square root it can
@@ -34,33 +34,33 @@ pub const LANES: usize = 4;
 
 /// One 3-vector per lane, as three arrays of components.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Vec3Lanes<F, const N: usize> {
+pub struct Vec3Lanes<F, const WIDTH: usize> {
     /// x components.
-    pub x: [F; N],
+    pub x: [F; WIDTH],
     /// y components.
-    pub y: [F; N],
+    pub y: [F; WIDTH],
     /// z components.
-    pub z: [F; N],
+    pub z: [F; WIDTH],
 }
 
-impl<F: Float, const N: usize> Default for Vec3Lanes<F, N> {
+impl<F: Float, const WIDTH: usize> Default for Vec3Lanes<F, WIDTH> {
     fn default() -> Self {
         Self {
-            x: [F::ZERO; N],
-            y: [F::ZERO; N],
-            z: [F::ZERO; N],
+            x: [F::ZERO; WIDTH],
+            y: [F::ZERO; WIDTH],
+            z: [F::ZERO; WIDTH],
         }
     }
 }
 
-impl<F: Float, const N: usize> Vec3Lanes<F, N> {
-    /// Lane `lane`'s vector. Panics if `lane >= N`, as indexing does.
+impl<F: Float, const WIDTH: usize> Vec3Lanes<F, WIDTH> {
+    /// Lane `lane`'s vector. Panics if `lane >= WIDTH`, as indexing does.
     #[inline(always)]
     pub fn get(&self, lane: usize) -> Vec3<F> {
         Vec3::new(self.x[lane], self.y[lane], self.z[lane])
     }
 
-    /// Sets lane `lane`'s vector. Panics if `lane >= N`, as indexing does.
+    /// Sets lane `lane`'s vector. Panics if `lane >= WIDTH`, as indexing does.
     #[inline(always)]
     pub fn set(&mut self, lane: usize, value: Vec3<F>) {
         self.x[lane] = value.x;
@@ -71,33 +71,33 @@ impl<F: Float, const N: usize> Vec3Lanes<F, N> {
 
 /// One sphere per lane: the fields of [`Sphere`], each as arrays.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SphereLanes<F: Float, const N: usize> {
+pub struct SphereLanes<F: Float, const WIDTH: usize> {
     /// Centre positions (m).
-    pub position: Vec3Lanes<F, N>,
+    pub position: Vec3Lanes<F, WIDTH>,
     /// Centre velocities (m/s).
-    pub velocity: Vec3Lanes<F, N>,
+    pub velocity: Vec3Lanes<F, WIDTH>,
     /// Angular velocities (rad/s).
-    pub angular_velocity: Vec3Lanes<F, N>,
+    pub angular_velocity: Vec3Lanes<F, WIDTH>,
     /// Radii (m).
-    pub radius: [F; N],
+    pub radius: [F; WIDTH],
     /// Masses (kg).
-    pub mass: [F; N],
+    pub mass: [F; WIDTH],
 }
 
-impl<F: Float, const N: usize> Default for SphereLanes<F, N> {
+impl<F: Float, const WIDTH: usize> Default for SphereLanes<F, WIDTH> {
     fn default() -> Self {
         Self {
             position: Vec3Lanes::default(),
             velocity: Vec3Lanes::default(),
             angular_velocity: Vec3Lanes::default(),
-            radius: [F::ZERO; N],
-            mass: [F::ZERO; N],
+            radius: [F::ZERO; WIDTH],
+            mass: [F::ZERO; WIDTH],
         }
     }
 }
 
-impl<F: Float, const N: usize> SphereLanes<F, N> {
-    /// Lane `lane`'s sphere. Panics if `lane >= N`, as indexing does.
+impl<F: Float, const WIDTH: usize> SphereLanes<F, WIDTH> {
+    /// Lane `lane`'s sphere. Panics if `lane >= WIDTH`, as indexing does.
     #[inline(always)]
     pub fn get(&self, lane: usize) -> Sphere<F> {
         Sphere {
@@ -109,7 +109,7 @@ impl<F: Float, const N: usize> SphereLanes<F, N> {
         }
     }
 
-    /// Sets lane `lane`'s sphere. Panics if `lane >= N`, as indexing does.
+    /// Sets lane `lane`'s sphere. Panics if `lane >= WIDTH`, as indexing does.
     #[inline(always)]
     pub fn set(&mut self, lane: usize, sphere: &Sphere<F>) {
         self.position.set(lane, sphere.position);
@@ -120,18 +120,18 @@ impl<F: Float, const N: usize> SphereLanes<F, N> {
     }
 }
 
-/// `N` pairs of spheres, lane by lane: lane `k` is the contact between `i`'s sphere `k` and `j`'s
-/// sphere `k`. Plain data, like [`Sphere`]: [`BoundLaw::sphere_pairs`] checks every lane.
+/// `WIDTH` pairs of spheres, lane by lane: lane `k` is the contact between `i`'s sphere `k` and
+/// `j`'s sphere `k`. Plain data, like [`Sphere`]: [`BoundLaw::sphere_pairs`] checks every lane.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PairBlock<F: Float, const N: usize> {
+pub struct PairBlock<F: Float, const WIDTH: usize> {
     /// Body i of each lane.
-    pub i: SphereLanes<F, N>,
+    pub i: SphereLanes<F, WIDTH>,
     /// Body j of each lane.
-    pub j: SphereLanes<F, N>,
+    pub j: SphereLanes<F, WIDTH>,
 }
 
-impl<F: Float, const N: usize> PairBlock<F, N> {
-    /// Sets lane `lane` to the pair `(i, j)`. Panics if `lane >= N`, as indexing does.
+impl<F: Float, const WIDTH: usize> PairBlock<F, WIDTH> {
+    /// Sets lane `lane` to the pair `(i, j)`. Panics if `lane >= WIDTH`, as indexing does.
     #[inline(always)]
     pub fn set(&mut self, lane: usize, i: &Sphere<F>, j: &Sphere<F>) {
         self.i.set(lane, i);
@@ -142,46 +142,46 @@ impl<F: Float, const N: usize> PairBlock<F, N> {
 /// What each lane of a block gave: the fields of [`ContactForces`] as arrays (zero where the lane
 /// does not touch), and each lane's outcome, read with [`ContactBlock::outcome`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactBlock<F: Float, const N: usize> {
+pub struct ContactBlock<F: Float, const WIDTH: usize> {
     /// Unit normals from i to j.
-    pub normal: Vec3Lanes<F, N>,
+    pub normal: Vec3Lanes<F, WIDTH>,
     /// Overlaps (m).
-    pub overlap: [F; N],
+    pub overlap: [F; WIDTH],
     /// Normal forces on j along the normal (N).
-    pub normal_force: [F; N],
+    pub normal_force: [F; WIDTH],
     /// Tangential forces on j (N).
-    pub tangential_force: Vec3Lanes<F, N>,
+    pub tangential_force: Vec3Lanes<F, WIDTH>,
     /// Slip velocities (m/s).
-    pub slip_velocity: Vec3Lanes<F, N>,
+    pub slip_velocity: Vec3Lanes<F, WIDTH>,
     /// Torques on i (N m).
-    pub torque_on_i: Vec3Lanes<F, N>,
+    pub torque_on_i: Vec3Lanes<F, WIDTH>,
     /// Torques on j (N m).
-    pub torque_on_j: Vec3Lanes<F, N>,
+    pub torque_on_j: Vec3Lanes<F, WIDTH>,
     /// Whether each contact slid.
-    pub sliding: [bool; N],
-    status: [u8; N],
+    pub sliding: [bool; WIDTH],
+    status: [u8; WIDTH],
 }
 
-impl<F: Float, const N: usize> Default for ContactBlock<F, N> {
+impl<F: Float, const WIDTH: usize> Default for ContactBlock<F, WIDTH> {
     fn default() -> Self {
         Self {
             normal: Vec3Lanes::default(),
-            overlap: [F::ZERO; N],
-            normal_force: [F::ZERO; N],
+            overlap: [F::ZERO; WIDTH],
+            normal_force: [F::ZERO; WIDTH],
             tangential_force: Vec3Lanes::default(),
             slip_velocity: Vec3Lanes::default(),
             torque_on_i: Vec3Lanes::default(),
             torque_on_j: Vec3Lanes::default(),
-            sliding: [false; N],
-            status: [Status::APART; N],
+            sliding: [false; WIDTH],
+            status: [Status::APART; WIDTH],
         }
     }
 }
 
-impl<F: Float, const N: usize> ContactBlock<F, N> {
+impl<F: Float, const WIDTH: usize> ContactBlock<F, WIDTH> {
     /// Lane `lane`'s result, exactly what [`BoundLaw::sphere_sphere`] or
     /// [`ContactLaw::sphere_sphere`] returns for that pair. A block not yet evaluated reads as
-    /// apart. Panics if `lane >= N`, as indexing does.
+    /// apart. Panics if `lane >= WIDTH`, as indexing does.
     ///
     /// # Errors
     /// The lane's [`ContactError`], as the one-contact path gives it.
@@ -309,11 +309,11 @@ fn select<T>(condition: bool, a: T, b: T) -> T {
 
 /// Evaluates a block; see [`BoundLaw::sphere_pairs`].
 #[inline(always)]
-pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
+pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const WIDTH: usize>(
     bound: &mut BoundLaw<ContactLaw<F, Nm, T, M, R, Ro>>,
-    block: &PairBlock<F, N>,
-    states: &mut [Ro::State<T::State>; N],
-    out: &mut ContactBlock<F, N>,
+    block: &PairBlock<F, WIDTH>,
+    states: &mut [Ro::State<T::State>; WIDTH],
+    out: &mut ContactBlock<F, WIDTH>,
 ) where
     F: Float,
     Nm: NormalModel<F>,
@@ -402,14 +402,14 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const N: usize>(
 }
 
 impl<L: Law> BoundLaw<L> {
-    /// Evaluates `N` sphere-sphere contacts, lane `k` of `block` with `states[k]`, into `out`:
+    /// Evaluates `WIDTH` sphere-sphere contacts, lane `k` of `block` with `states[k]`, into `out`:
     /// for every lane the same bits, the same state handling and the same error as
     /// [`ContactLaw::sphere_sphere`] (which [`BoundLaw::sphere_sphere`] equals) on that pair.
     /// Every lane's spheres are checked, as that function checks them; a bad lane leaves its
     /// state as it was and does not disturb the others. Read each lane with
     /// [`ContactBlock::outcome`].
     ///
-    /// Take `N` = [`LANES`] and a backend whose square root vectorises (`Std`, feature `std`);
+    /// Take `WIDTH` = [`LANES`] and a backend whose square root vectorises (`Std`, feature `std`);
     /// with [`Libm`](crate::Libm) the lanes run one after another, with the same bits.
     /// Inlined into a large function (a threaded pair loop), the compiler may stop widening the
     /// lanes; calling it from a small non-inlined function of the engine's keeps them widened
@@ -444,11 +444,11 @@ impl<L: Law> BoundLaw<L> {
     /// assert_eq!(out.outcome(1), Err(ContactError::CoincidentCentres));
     /// ```
     #[inline(always)]
-    pub fn sphere_pairs<const N: usize>(
+    pub fn sphere_pairs<const WIDTH: usize>(
         &mut self,
-        block: &PairBlock<L::Float, N>,
-        states: &mut [L::State; N],
-        out: &mut ContactBlock<L::Float, N>,
+        block: &PairBlock<L::Float, WIDTH>,
+        states: &mut [L::State; WIDTH],
+        out: &mut ContactBlock<L::Float, WIDTH>,
     ) {
         L::evaluate_pairs(self, block, states, out);
     }

@@ -106,11 +106,11 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
     /// What [`BoundLaw::sphere_pairs`] calls.
-    fn evaluate_pairs<const N: usize>(
+    fn evaluate_pairs<const WIDTH: usize>(
         bound: &mut BoundLaw<Self>,
-        block: &PairBlock<Self::Float, N>,
-        states: &mut [Self::State; N],
-        out: &mut ContactBlock<Self::Float, N>,
+        block: &PairBlock<Self::Float, WIDTH>,
+        states: &mut [Self::State; WIDTH],
+        out: &mut ContactBlock<Self::Float, WIDTH>,
     );
 
     /// What [`BoundLaw::sphere_wall`] calls.

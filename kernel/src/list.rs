@@ -244,11 +244,11 @@ impl core::error::Error for ListError {}
 
 /// Checks the spheres: lengths, material ids, every sphere (in that order, the first failure
 /// winning). Returns the lightest sphere's mass of each material present.
-fn check_spheres<F: Float, const M: usize>(
+fn check_spheres<F: Float, const MATERIALS: usize>(
     spheres: &impl Spheres<F>,
-) -> Result<[Option<F>; M], ListError> {
-    check_materials::<F, M>(spheres)?;
-    let mut lightest = [None; M];
+) -> Result<[Option<F>; MATERIALS], ListError> {
+    check_materials::<F, MATERIALS>(spheres)?;
+    let mut lightest = [None; MATERIALS];
     for k in 0..spheres.len() {
         let slot = &mut lightest[spheres.material(k) as usize];
         let mass = spheres.sphere(k).mass;
@@ -258,11 +258,13 @@ fn check_spheres<F: Float, const M: usize>(
 }
 
 /// Checks the spheres as [`check_spheres`] does, without the masses an evaluation does not need.
-fn check_materials<F: Float, const M: usize>(spheres: &impl Spheres<F>) -> Result<(), ListError> {
+fn check_materials<F: Float, const MATERIALS: usize>(
+    spheres: &impl Spheres<F>,
+) -> Result<(), ListError> {
     spheres.check_lengths()?;
     for k in 0..spheres.len() {
         let material = spheres.material(k);
-        if material as usize >= M {
+        if material as usize >= MATERIALS {
             return Err(ListError::Material {
                 sphere: k,
                 material,
@@ -273,8 +275,8 @@ fn check_materials<F: Float, const M: usize>(spheres: &impl Spheres<F>) -> Resul
     Ok(())
 }
 
-fn check_walls<F, const M: usize>(walls: &[MaterialWall<F>]) -> Result<(), ListError> {
-    match walls.iter().position(|w| w.material as usize >= M) {
+fn check_walls<F, const MATERIALS: usize>(walls: &[MaterialWall<F>]) -> Result<(), ListError> {
+    match walls.iter().position(|w| w.material as usize >= MATERIALS) {
         Some(wall) => Err(ListError::WallMaterial {
             wall,
             material: walls[wall].material,
@@ -283,7 +285,7 @@ fn check_walls<F, const M: usize>(walls: &[MaterialWall<F>]) -> Result<(), ListE
     }
 }
 
-impl<L: Law, const M: usize> MaterialTable<L, M> {
+impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// Checks `seconds` for these spheres and walls: against the law of every pair of materials
     /// present, at the smallest effective mass two of their spheres give (the two lightest:
     /// `m_a m_b / (m_a + m_b)`), and against the law of every material present with every
@@ -303,8 +305,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<TimeStep<L::Float>, ListError> {
-        let lightest = check_spheres::<_, M>(spheres)?;
-        check_walls::<_, M>(walls)?;
+        let lightest = check_spheres::<_, MATERIALS>(spheres)?;
+        check_walls::<_, MATERIALS>(walls)?;
         let refused = |a: usize, b: usize| {
             move |error| ListError::TimeStep {
                 materials: [a as u32, b as u32],
@@ -342,8 +344,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<Option<L::Float>, ListError> {
-        let lightest = check_spheres::<_, M>(spheres)?;
-        check_walls::<_, M>(walls)?;
+        let lightest = check_spheres::<_, MATERIALS>(spheres)?;
+        check_walls::<_, MATERIALS>(walls)?;
         let laws = self.rows();
         let mut smallest: Option<L::Float> = None;
         let mut keep = |step: L::Float| smallest = Some(smallest.map_or(step, |s| s.min_of(step)));
@@ -472,8 +474,8 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         if let Some(&(_, _, array)) = lengths.iter().find(|(got, wanted, _)| got != wanted) {
             return Err(ListError::Length(array));
         }
-        check_materials::<_, M>(spheres)?;
-        check_walls::<_, M>(walls)?;
+        check_materials::<_, MATERIALS>(spheres)?;
+        check_walls::<_, MATERIALS>(walls)?;
         if let Some(pair) = pairs
             .iter()
             .position(|&[i, j]| i as usize >= n || j as usize >= n)
@@ -495,7 +497,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
             stats: ListStats::default(),
         };
         let laws = self.rows();
-        let mut bound: [[BoundLaw<L>; M]; M] =
+        let mut bound: [[BoundLaw<L>; MATERIALS]; MATERIALS] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
         let outcome = evaluate_pairs(
             spheres,
@@ -594,11 +596,11 @@ const GROUP: usize = 8;
 /// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
 /// committed in list order. Stops at the first chunk with a refused pair, naming the first in
 /// list order, with how many pairs' states it had copied (and may have changed).
-fn evaluate_pairs<L: Law, const M: usize>(
+fn evaluate_pairs<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
     (states, saved): (&mut [L::State], &mut [L::State]),
-    bound: &mut [[BoundLaw<L>; M]; M],
+    bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut Sink<'_, L::Float>,
     blocks: bool,
 ) -> Result<(), (ListError, usize)> {
@@ -650,10 +652,10 @@ fn evaluate_pairs<L: Law, const M: usize>(
 }
 
 /// Every sphere against every wall, one at a time, committed as they go.
-fn evaluate_walls<L: Law, const M: usize>(
+fn evaluate_walls<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
-    bound: &mut [[BoundLaw<L>; M]; M],
+    bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut Sink<'_, L::Float>,
     first: usize,
 ) -> Result<(), ListError> {
@@ -734,13 +736,17 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
     /// forces the caller puts back); returns the first refused.
     #[inline(always)]
-    fn one_at_a_time<L: Law<Float = F, State = S>, const M: usize>(
+    fn one_at_a_time<L: Law<Float = F, State = S>, const MATERIALS: usize>(
         &mut self,
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         (states, saved): (&mut [S], &[S]),
         found: usize,
-        (bound, sink, first): (&mut [[BoundLaw<L>; M]; M], &mut Sink<'_, F>, usize),
+        (bound, sink, first): (
+            &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
+            &mut Sink<'_, F>,
+            usize,
+        ),
     ) -> Option<(usize, ContactError)> {
         for &k in &self.touching[..found] {
             let k = usize::from(k);
@@ -765,13 +771,13 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     /// law), gathered in groups of blocks straight from the arrays, evaluated, and each pair's
     /// forces and state kept. Returns the first refused pair in list order.
     #[inline(always)]
-    fn in_blocks<L: Law<Float = F, State = S>, const M: usize>(
+    fn in_blocks<L: Law<Float = F, State = S>, const MATERIALS: usize>(
         &mut self,
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         (states, saved): (&mut [S], &[S]),
         found: usize,
-        bound: &mut [[BoundLaw<L>; M]; M],
+        bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     ) -> Option<(usize, ContactError)> {
         let material = |k: usize| spheres.material(k) as usize;
         let key = |k: usize| {
@@ -779,12 +785,12 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             (i.min(j), i.max(j))
         };
         // A counting sort by pair of materials, stable, so each pair's run keeps list order.
-        let mut counts = [[0usize; M]; M];
+        let mut counts = [[0usize; MATERIALS]; MATERIALS];
         for &k in &self.touching[..found] {
             let (a, b) = key(usize::from(k));
             counts[a][b] += 1;
         }
-        let mut starts = [[0usize; M]; M];
+        let mut starts = [[0usize; MATERIALS]; MATERIALS];
         let mut next = 0;
         for (row, starts) in counts.iter().zip(starts.iter_mut()) {
             for (count, start) in row.iter().zip(starts.iter_mut()) {

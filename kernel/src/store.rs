@@ -26,9 +26,9 @@ impl ContactKey {
     }
 }
 
-/// Per-contact states for up to `N` simultaneous contacts, with no heap: an open-addressing map
-/// with a fixed FNV hash, so its behaviour is the same on every run. `N` must be a power of two
-/// greater than one (checked at compile time).
+/// Per-contact states for up to `CAPACITY` simultaneous contacts, with no heap: an
+/// open-addressing map with a fixed FNV hash, so its behaviour is the same on every run.
+/// `CAPACITY` must be a power of two greater than one (checked at compile time).
 ///
 /// [`ContactHistory::evaluate`] inserts a state on first touch, updates it while touching and
 /// drops it when the contact ends. A new contact that finds the store full gets
@@ -70,17 +70,17 @@ impl ContactKey {
 /// assert_eq!((history.len(), before), (2, after));
 /// ```
 #[derive(Clone, Debug)]
-pub struct ContactHistory<S, const N: usize> {
-    states: FnvIndexMap<ContactKey, S, N>,
+pub struct ContactHistory<S, const CAPACITY: usize> {
+    states: FnvIndexMap<ContactKey, S, CAPACITY>,
 }
 
-impl<S: ContactState, const N: usize> Default for ContactHistory<S, N> {
+impl<S: ContactState, const CAPACITY: usize> Default for ContactHistory<S, CAPACITY> {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl<S: ContactState, const N: usize> ContactHistory<S, N> {
+impl<S: ContactState, const CAPACITY: usize> ContactHistory<S, CAPACITY> {
     /// An empty store.
     pub const fn new() -> Self {
         Self {
@@ -100,12 +100,12 @@ impl<S: ContactState, const N: usize> ContactHistory<S, N> {
 
     /// True when no new contact fits.
     pub fn is_full(&self) -> bool {
-        self.states.len() == N
+        self.states.len() == CAPACITY
     }
 
-    /// The capacity `N`.
+    /// The capacity `CAPACITY`.
     pub const fn capacity(&self) -> usize {
-        N
+        CAPACITY
     }
 
     /// The stored state of a contact.
@@ -144,7 +144,8 @@ impl<S: ContactState, const N: usize> ContactHistory<S, N> {
     /// # Errors
     /// Whatever `step` returns (the store is then unchanged), and [`ContactError::HistoryFull`]
     /// when a new touching contact does not fit (the store is then unchanged and the forces of
-    /// that step are not returned: the caller decides whether to drop the contact or grow `N`).
+    /// that step are not returned: the caller decides whether to drop the contact or grow
+    /// `CAPACITY`).
     pub fn evaluate<F>(
         &mut self,
         key: ContactKey,

@@ -4,9 +4,10 @@ use crate::engine::Law;
 use crate::error::ParameterError;
 use crate::mixing::Mixing;
 
-/// The contact laws of a scene of up to `M` materials: one law of type `L` per pair of material
-/// ids, symmetric, made by a [`Mixing`] rule from each material's properties and overridable
-/// pair by pair. Walls are materials of the same table. No allocation: `M * M` laws inline.
+/// The contact laws of a scene of up to `MATERIALS` materials: one law of type `L` per pair of
+/// material ids, symmetric, made by a [`Mixing`] rule from each material's properties and
+/// overridable pair by pair. Walls are materials of the same table. No allocation:
+/// `MATERIALS * MATERIALS` laws inline.
 ///
 /// Engines evaluate whole contact lists through it ([`MaterialTable::evaluate`]), with the time
 /// step checked against the spheres actually present ([`MaterialTable::time_step`]).
@@ -30,14 +31,14 @@ use crate::mixing::Mixing;
 /// # use soft_sphere::Mixing;
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct MaterialTable<L, const M: usize> {
-    laws: [[L; M]; M],
+pub struct MaterialTable<L, const MATERIALS: usize> {
+    laws: [[L; MATERIALS]; MATERIALS],
 }
 
 /// Why a [`MaterialTable`] could not be built or changed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TableError {
-    /// A material id is not below the table's capacity `M`.
+    /// A material id is not below the table's capacity `MATERIALS`.
     MaterialOutOfRange {
         /// The id.
         material: usize,
@@ -68,12 +69,17 @@ impl core::fmt::Display for TableError {
 
 impl core::error::Error for TableError {}
 
-impl<L: Law, const M: usize> MaterialTable<L, M> {
+impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// Every pair of materials under the same law.
     pub fn uniform(law: L) -> Self {
-        const { assert!(M > 0, "a material table holds at least one material") };
+        const {
+            assert!(
+                MATERIALS > 0,
+                "a material table holds at least one material"
+            )
+        };
         Self {
-            laws: [[law; M]; M],
+            laws: [[law; MATERIALS]; MATERIALS],
         }
     }
 
@@ -86,7 +92,7 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     /// parameters.
     pub fn mixed<X: Mixing<L::Float, Law = L>>(
         mixing: &X,
-        materials: &[X::Properties; M],
+        materials: &[X::Properties; MATERIALS],
     ) -> Result<Self, TableError> {
         let law = |a: usize, b: usize| {
             mixing
@@ -99,11 +105,11 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         let mut table = Self::uniform(law(0, 0)?);
         // Each material against itself first, so that a bad property is reported as its own
         // material's, not as a mixed pair's (whose mean of it may not even be a number).
-        for a in 0..M {
+        for a in 0..MATERIALS {
             table.put(a, a, law(a, a)?);
         }
-        for a in 0..M {
-            for b in a + 1..M {
+        for a in 0..MATERIALS {
+            for b in a + 1..MATERIALS {
                 table.put(a, b, law(a, b)?);
             }
         }
@@ -113,10 +119,11 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
     /// Gives the pair of materials `a` and `b` (in either order) its own law.
     ///
     /// # Errors
-    /// [`TableError::MaterialOutOfRange`] for an id not below `M`; the table is then unchanged.
+    /// [`TableError::MaterialOutOfRange`] for an id not below `MATERIALS`; the table is then
+    /// unchanged.
     pub fn set(&mut self, a: usize, b: usize, law: L) -> Result<(), TableError> {
         for material in [a, b] {
-            if material >= M {
+            if material >= MATERIALS {
                 return Err(TableError::MaterialOutOfRange { material });
             }
         }
@@ -124,14 +131,14 @@ impl<L: Law, const M: usize> MaterialTable<L, M> {
         Ok(())
     }
 
-    /// The law between materials `a` and `b`, `None` when either is not below `M`.
+    /// The law between materials `a` and `b`, `None` when either is not below `MATERIALS`.
     #[inline(always)]
     pub fn law(&self, a: usize, b: usize) -> Option<&L> {
         self.laws.get(a)?.get(b)
     }
 
     /// Every row of laws: row `a` holds material `a`'s law with each material.
-    pub(crate) fn rows(&self) -> &[[L; M]; M] {
+    pub(crate) fn rows(&self) -> &[[L; MATERIALS]; MATERIALS] {
         &self.laws
     }
 
