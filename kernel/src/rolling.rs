@@ -3,8 +3,8 @@
 //! | slot | torque on i | state |
 //! |---|---|---|
 //! | [`NoRolling`] (default, zero-sized) | none | none |
-//! | [`ConstantRolling`] (Ai et al. 2011, model A) | `-mu_r R* |F_n| w_r / |w_r|` | none |
-//! | [`ElasticPlasticRolling`] (Ai et al. 2011, model C, "EPSD"; LAMMPS `rolling sds`) | spring `M_k += -k_r w_r dt`, limited to `mu_r R* |F_n|`, plus `-eta_r w_r` below the limit | the spring torque, 3 floats |
+//! | [`ConstantRolling`] (Ai et al. 2011, their rolling model A) | `-mu_r R* |F_n| w_r / |w_r|` | none |
+//! | [`ElasticPlasticRolling`] (Ai et al. 2011, their rolling model C, "EPSD"; LAMMPS `rolling sds`) | spring `M_k += -k_r w_r dt`, limited to `mu_r R* |F_n|`, plus `-eta_r w_r` below the limit | the spring torque, 3 floats |
 //!
 //! `w_r` is the rolling part of the relative angular velocity `w_i - w_j`: its component in the
 //! tangent plane (the twisting part about the normal is not resisted). Body j receives the
@@ -106,8 +106,8 @@ impl<F: Float> RollingModel<F> for NoRolling {
     }
 }
 
-/// A constant torque `mu_r R* |F_n|` against the relative rolling (Ai et al. 2011, model A).
-/// Stores nothing. With no spring it cannot hold a body at rest: at zero rolling speed it flips
+/// A constant torque `mu_r R* |F_n|` against the relative rolling (Ai et al. 2011, their rolling
+/// model A). Stores nothing. With no spring it cannot hold a body at rest: at zero rolling speed it flips
 /// from one side to the other every step, a chatter of one step's angular impulse.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConstantRolling<F> {
@@ -163,8 +163,8 @@ impl<F: Float> RollingModel<F> for ConstantRolling<F> {
     }
 }
 
-/// The elastic-plastic spring-dashpot rolling law (Ai et al. 2011, model C; LAMMPS `rolling
-/// sds`): a rolling spring `M_k += -k_r w_r dt`, limited to `mu_r R* |F_n|` (then it rolls
+/// The elastic-plastic spring-dashpot rolling law (Ai et al. 2011, their rolling model C; LAMMPS
+/// `rolling sds`): a rolling spring `M_k += -k_r w_r dt`, limited to `mu_r R* |F_n|` (then it rolls
 /// plastically, without the dashpot), and below the limit a dashpot `-eta_r w_r`. Holds a sphere
 /// at rest on a slope up to `tan(theta) = mu_r`.
 #[derive(Clone, Copy, Debug, PartialEq)]
