@@ -1,4 +1,4 @@
-/* soft-sphere C ABI. Generated from examples/c-abi/src/lib.rs by cbindgen; do not edit. */
+/* soft-sphere C ABI. Generated from examples/c-abi/src by cbindgen; do not edit. */
 
 #ifndef SOFT_SPHERE_H
 #define SOFT_SPHERE_H

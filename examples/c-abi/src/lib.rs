@@ -15,7 +15,11 @@
 //! which reuses what the previous call derived (the pair's oscillator, the wall) and so suits an
 //! engine's loop over its neighbour list. Both give the same bits.
 //!
-//! The header `include/soft_sphere.h` is generated from this file by cbindgen; the test
+//! The laws are listed once (`registry.rs`): the handles, their dispatch, the constructors, the
+//! table kinds and the names (`ss_model_name`, `ss_model_of_name`, `names.rs`) follow from that
+//! list. A material table and a whole neighbour list per call: `ss_table_*` (`table.rs`).
+//!
+//! The header `include/soft_sphere.h` is generated from `src/` by cbindgen; the test
 //! `header_is_current` fails when it is stale (`UPDATE_HEADER=1 cargo test -p soft-sphere-ffi`
 //! rewrites it).
 
