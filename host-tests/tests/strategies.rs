@@ -157,14 +157,29 @@ fn velocities_and_spins_fill_their_range_both_ways() {
 }
 
 #[test]
+fn spheres_spin_across_their_range() {
+    // Spin speeds (angular velocity times radius) are uniform within +-2 m/s per component.
+    let spins: Vec<f64> = draws(sphere::<f64>(), 500)
+        .iter()
+        .flat_map(|s| (s.angular_velocity * s.radius).to_array())
+        .collect();
+    assert!(spins.iter().all(|w| w.abs() <= 2.0 * (1.0 + 1e-12)));
+    let fast = spins.iter().filter(|w| w.abs() > 1.0).count() as f64 / spins.len() as f64;
+    assert!((fast - 0.5).abs() < 0.05, "{fast}");
+}
+
+#[test]
 fn a_hint_along_the_normal_still_gives_a_tangent() {
     let mut c = draws(impact(45.0..=45.0, 1.0..=1.0), 1).remove(0);
-    for normal in [
+    let axes = [
         [1.0, 0.0, 0.0],
         [0.0, 1.0, 0.0],
         [0.0, 0.0, 1.0],
         [-1.0, 0.0, 0.0],
-    ] {
+    ];
+    // Off the axes too, so that the stand-in direction has a part along the normal to remove.
+    let oblique = [[0.6, 0.8, 0.0], [0.96, 0.28, 0.0], [0.0, -0.6, 0.8]];
+    for normal in axes.into_iter().chain(oblique) {
         c.normal = normal;
         c.tangent_hint = normal;
         let (i, j) = c.pair::<f64>();
