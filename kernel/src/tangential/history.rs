@@ -96,12 +96,9 @@ fn stored_spring_step<F: Float, M: MathBackend<F>>(
     }
 }
 
+/// The slot's behaviour for a law struct declared beside its invocation.
 macro_rules! stored_spring_model {
-    ($(#[$doc:meta])* $name:ident, $slide:expr, $keep:expr) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq)]
-        pub struct $name<F>(pub TangentialParameters<F>);
-
+    ($name:ident, $slide:expr, $keep:expr) => {
         impl<F: Float> TangentialModel<F> for $name<F> {
             type State = SpringDisplacement<F>;
 
@@ -119,51 +116,47 @@ macro_rules! stored_spring_model {
             }
 
             fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
-        let oscillator = &design.oscillator;
+                let oscillator = &design.oscillator;
                 self.0.spring_critical_step(oscillator, tangential_mass)
             }
         }
     };
 }
 
-stored_spring_model!(
-    /// Model A (Cundall & Strack 1979): a sliding contact pushes along the trial force, and the
-    /// stored displacement keeps growing while it slides. The oversized spring then throws a
-    /// rolling sphere backwards and exaggerates spin; shown here so that failure can be measured.
-    ModelA,
-    Slide::AlongTrial,
-    Keep::Everything
-);
+/// Model A (Cundall & Strack 1979): a sliding contact pushes along the trial force, and the
+/// stored displacement keeps growing while it slides. The oversized spring then throws a
+/// rolling sphere backwards and exaggerates spin; shown here so that failure can be measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelA<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(
-    /// Model B (Tsuji et al. 1992): a sliding contact pushes against the slip velocity, and the
-    /// stored displacement keeps growing while it slides. It locks at rigid-body rolling (5/7) at
-    /// small impact angles and misses the elastic recoil; shown so that failure can be measured.
-    ModelB,
-    Slide::AgainstSlip,
-    Keep::Everything
-);
+stored_spring_model!(ModelA, Slide::AlongTrial, Keep::Everything);
 
-stored_spring_model!(
-    /// Model AA (Elghannay & Tafti's proper implementation): Model A's sliding force, with the stored
-    /// displacement limited to `mu |F_n| / k_t` after every sliding step, as a deformation must be.
-    /// Reproduces the Kharaz oblique-impact data including the recoil dip near 20 degrees, and
-    /// rolling at 5/7 on a plate. This is the plain displacement cap; [`ModelAALuding`] is
-    /// Luding's variant.
-    ModelAA,
-    Slide::AlongTrial,
-    Keep::Capped
-);
+/// Model B (Tsuji et al. 1992): a sliding contact pushes against the slip velocity, and the
+/// stored displacement keeps growing while it slides. It locks at rigid-body rolling (5/7) at
+/// small impact angles and misses the elastic recoil; shown so that failure can be measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelB<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(
-    /// Model AA with Luding's reset (Luding 2008; LAMMPS `gran/hooke/history`, `pair granular`
-    /// `linear_history`): Model A's sliding force, and after a sliding step the stored displacement
-    /// set so that spring plus dashpot equal the sliding force, `xi = -(F_t + eta_t v_t) / k_t`.
-    /// It differs from [`ModelAA`]'s plain cap through the dashpot term only, and equals it
-    /// without a tangential dashpot. It creates no kinetic energy, but with a strong tangential
-    /// dashpot the spring it keeps, `-eta_t v_t / k_t` in gross sliding, can store far more
-    /// energy than the cap allows (`host-tests/tests/properties.rs`, the energy search).
-    ModelAALuding,
-    Slide::AlongTrial,
-    Keep::Luding
-);
+stored_spring_model!(ModelB, Slide::AgainstSlip, Keep::Everything);
+
+/// Model AA (Elghannay & Tafti's proper implementation): Model A's sliding force, with the stored
+/// displacement limited to `mu |F_n| / k_t` after every sliding step, as a deformation must be.
+/// Reproduces the Kharaz oblique-impact data including the recoil dip near 20 degrees, and
+/// rolling at 5/7 on a plate. This is the plain displacement cap; [`ModelAALuding`] is
+/// Luding's variant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelAA<F>(pub TangentialParameters<F>);
+
+stored_spring_model!(ModelAA, Slide::AlongTrial, Keep::Capped);
+
+/// Model AA with Luding's reset (Luding 2008; LAMMPS `gran/hooke/history`, `pair granular`
+/// `linear_history`): Model A's sliding force, and after a sliding step the stored displacement
+/// set so that spring plus dashpot equal the sliding force, `xi = -(F_t + eta_t v_t) / k_t`.
+/// It differs from [`ModelAA`]'s plain cap through the dashpot term only, and equals it
+/// without a tangential dashpot. It creates no kinetic energy, but with a strong tangential
+/// dashpot the spring it keeps, `-eta_t v_t / k_t` in gross sliding, can store far more
+/// energy than the cap allows (`host-tests/tests/properties.rs`, the energy search).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelAALuding<F>(pub TangentialParameters<F>);
+
+stored_spring_model!(ModelAALuding, Slide::AlongTrial, Keep::Luding);

@@ -159,12 +159,9 @@ fn mindlin_step<F: Float, M: MathBackend<F>>(
     }
 }
 
+/// The slot's behaviour for a law struct declared beside its invocation.
 macro_rules! stored_mindlin_model {
-    ($(#[$doc:meta])* $name:ident, $keep:expr) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq)]
-        pub struct $name<F>(pub MindlinParameters<F>);
-
+    ($name:ident, $keep:expr) => {
         impl<F: Float> TangentialModel<F> for $name<F> {
             type State = MindlinSpring<F>;
             const NEEDS_CONTACT_RADIUS: bool = true;
@@ -194,23 +191,23 @@ macro_rules! stored_mindlin_model {
     };
 }
 
-stored_mindlin_model!(
-    /// Hertz-Mindlin with Model AA's plain cap: Mindlin's spring `k_t = 8 G* a`, stored as a force
-    /// and rescaled on unloading, the sliding force along the trial force, and the stored spring
-    /// limited to `mu |F_n|` after every sliding step. The Hertz counterpart of
-    /// [`ModelAA`](crate::ModelAA).
-    MindlinAA,
-    Keep::Capped
-);
+/// Hertz-Mindlin with Model AA's plain cap: Mindlin's spring `k_t = 8 G* a`, stored as a force
+/// and rescaled on unloading, the sliding force along the trial force, and the stored spring
+/// limited to `mu |F_n|` after every sliding step. The Hertz counterpart of
+/// [`ModelAA`](crate::ModelAA).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MindlinAA<F>(pub MindlinParameters<F>);
 
-stored_mindlin_model!(
-    /// Hertz-Mindlin with Luding's reset: as [`MindlinAA`], but after a sliding step the stored
-    /// spring is set so that spring plus dashpot equal the sliding force (LAMMPS `pair granular
-    /// tangential mindlin_rescale/force`). The Hertz counterpart of
-    /// [`ModelAALuding`](crate::ModelAALuding).
-    MindlinAALuding,
-    Keep::Luding
-);
+stored_mindlin_model!(MindlinAA, Keep::Capped);
+
+/// Hertz-Mindlin with Luding's reset: as [`MindlinAA`], but after a sliding step the stored
+/// spring is set so that spring plus dashpot equal the sliding force (LAMMPS `pair granular
+/// tangential mindlin_rescale/force`). The Hertz counterpart of
+/// [`ModelAALuding`](crate::ModelAALuding).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MindlinAALuding<F>(pub MindlinParameters<F>);
+
+stored_mindlin_model!(MindlinAALuding, Keep::Luding);
 
 /// The stateless law under Hertz: `xi = v_t t_e` with Mindlin's stiffness at the current contact
 /// radius, then Model AA's limit and sliding rule. Stores nothing. `t_e` comes from the contact's
