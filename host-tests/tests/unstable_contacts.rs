@@ -83,7 +83,10 @@ fn a_wall_law_stiffer_than_the_step_is_refused() {
     let (rise, touching, unstable) =
         bounce(&wall_law, step.tolerating_unstable_contacts(), 2.0e-3).unwrap();
     assert!(rise > 4.0e-3, "rose {rise}");
-    assert!(touching > 0 && unstable == touching, "{unstable} of {touching}");
+    assert!(
+        touching > 0 && unstable == touching,
+        "{unstable} of {touching}"
+    );
     // With the wall law's own step the drop rebounds below its height (e = 0.7).
     let own = wall_law
         .time_step(wall_law.recommended_time_step(mass), mass)

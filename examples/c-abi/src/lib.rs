@@ -31,6 +31,7 @@ mod registry;
 mod exports;
 mod arrays;
 mod codes;
+mod list;
 mod names;
 mod state;
 pub mod table;

@@ -8,18 +8,16 @@
 //! caller gave as it was.
 
 use soft_sphere::{
-    Backup, CheckedSphere, ContactLaw, ContactList, ElasticMaterial, ElasticPlasticRolling, Float,
-    HertzImpact, HertzMicroSlip, HertzMixing, Interaction, Law, LinearMaterial, ListError,
-    ListOutput, ListStats, Material, MaterialTable, MathBackend, MicroSlip, MindlinAA,
-    MindlinParameters, Mixing, NormalModel, ParameterError, Rotation, Sphere, SphereArrays,
-    TangentialModel, TimeStep, Vec3,
+    ContactLaw, ElasticMaterial, ElasticPlasticRolling, Float, HertzImpact, HertzMicroSlip,
+    HertzMixing, Interaction, Law, LinearMaterial, ListError, Material, MaterialTable, MathBackend,
+    MicroSlip, MindlinAA, MindlinParameters, Mixing, NormalModel, ParameterError, Rotation,
+    SphereArrays, TangentialModel, TimeStep, Vec3,
 };
 
 use crate::registry::{PlainTable, RolledTable, hertz_family};
 use crate::{
-    Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_ERR_UNSTABLE_TIME_STEP, SS_MICROSLIP_SPRINGS,
-    SS_MODEL_HERTZ_MICROSLIP, SS_OK, SS_PARAMETER_NONE, contact_code, forces_of, parameter_code,
-    rejected_parameter, ss_forces, ss_sphere, ss_wall,
+    Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_MICROSLIP_SPRINGS, SS_MODEL_HERTZ_MICROSLIP, SS_OK,
+    SS_PARAMETER_NONE, parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
 };
 
 /// The most materials a table holds (LAMMPS atom types).
@@ -231,54 +229,54 @@ pub struct ss_table<F: Float> {
 /// One family's table.
 #[derive(Debug)]
 pub(crate) struct Tabled<F: Float, X: Mixing<F>> {
-    mixing: X,
-    properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
-    materials: usize,
+    pub(crate) mixing: X,
+    pub(crate) properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
+    pub(crate) materials: usize,
     /// Each material's own coefficients, for the mixing rule.
-    own: [Option<X::Properties>; SS_MATERIALS_MAX],
+    pub(crate) own: [Option<X::Properties>; SS_MATERIALS_MAX],
     /// Pairs given their own coefficients: their law is the mixing rule's of those with
     /// themselves.
-    given: [[Option<X::Properties>; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
-    ready: Option<(MaterialTable<X::Law, SS_MATERIALS_MAX>, TimeStep<F>)>,
-    work: Workspace<F, <X::Law as Law>::State>,
-    wall_work: WallWork<F, <X::Law as Law>::State>,
+    pub(crate) given: [[Option<X::Properties>; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
+    pub(crate) ready: Option<(MaterialTable<X::Law, SS_MATERIALS_MAX>, TimeStep<F>)>,
+    pub(crate) work: Workspace<F, <X::Law as Law>::State>,
+    pub(crate) wall_work: WallWork<F, <X::Law as Law>::State>,
 }
 
 /// The memory an evaluation gathers the list into and the kernel writes through.
 #[derive(Debug, Default)]
-struct Workspace<F, S> {
-    material: Vec<u32>,
-    pairs: Vec<[u32; 2]>,
-    states: Vec<S>,
-    saved: Vec<S>,
-    loads: Vec<Vec3<F>>,
-    force: Vec<Vec3<F>>,
-    torque: Vec<Vec3<F>>,
-    records: Vec<Interaction<F>>,
+pub(crate) struct Workspace<F, S> {
+    pub(crate) material: Vec<u32>,
+    pub(crate) pairs: Vec<[u32; 2]>,
+    pub(crate) states: Vec<S>,
+    pub(crate) saved: Vec<S>,
+    pub(crate) loads: Vec<Vec3<F>>,
+    pub(crate) force: Vec<Vec3<F>>,
+    pub(crate) torque: Vec<Vec3<F>>,
+    pub(crate) records: Vec<Interaction<F>>,
 }
 
 /// The memory a walls evaluation gathers the selected atoms into.
 #[derive(Debug)]
-struct WallWork<F, S> {
-    index: Vec<usize>,
+pub(crate) struct WallWork<F, S> {
+    pub(crate) index: Vec<usize>,
     /// Selected atoms clear of every wall.
-    clear: Vec<usize>,
-    position: Vec<Vec3<F>>,
-    velocity: Vec<Vec3<F>>,
-    spin: Vec<Vec3<F>>,
-    radius: Vec<F>,
-    mass: Vec<F>,
-    material: Vec<u32>,
-    walls: Vec<soft_sphere::MaterialWall<F>>,
-    states: Vec<S>,
-    saved: Vec<S>,
-    loads: Vec<Vec3<F>>,
-    force: Vec<Vec3<F>>,
-    torque: Vec<Vec3<F>>,
+    pub(crate) clear: Vec<usize>,
+    pub(crate) position: Vec<Vec3<F>>,
+    pub(crate) velocity: Vec<Vec3<F>>,
+    pub(crate) spin: Vec<Vec3<F>>,
+    pub(crate) radius: Vec<F>,
+    pub(crate) mass: Vec<F>,
+    pub(crate) material: Vec<u32>,
+    pub(crate) walls: Vec<soft_sphere::MaterialWall<F>>,
+    pub(crate) states: Vec<S>,
+    pub(crate) saved: Vec<S>,
+    pub(crate) loads: Vec<Vec3<F>>,
+    pub(crate) force: Vec<Vec3<F>>,
+    pub(crate) torque: Vec<Vec3<F>>,
 }
 
 impl<F, S> WallWork<F, S> {
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             index: Vec::new(),
             clear: Vec::new(),
@@ -341,7 +339,7 @@ where
     }
 }
 
-fn rolling_of<F: Float>(c: &ss_coefficients<F>) -> [F; 3] {
+pub(crate) fn rolling_of<F: Float>(c: &ss_coefficients<F>) -> [F; 3] {
     [c.rolling_friction, c.rolling_stiffness, c.rolling_damping]
 }
 
@@ -366,7 +364,7 @@ pub(crate) fn rolled_elastic<F: Float>(
 /// The Hertz-Mindlin mixing rule with micro-slip: [`HertzMixing`]'s Hertz law and Mindlin
 /// parameters, the springs spanning one contact radius for every pair.
 #[derive(Clone, Copy, Debug)]
-struct MicroSlipMixing<F: Float> {
+pub(crate) struct MicroSlipMixing<F: Float> {
     largest: HertzImpact<F>,
     span: F,
 }
@@ -385,7 +383,7 @@ impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
 /// A table of the registry's laws (`registry.rs`), with or without rolling resistance, or of
 /// micro-slip.
 #[derive(Debug)]
-enum AnyTable<F: Float> {
+pub(crate) enum AnyTable<F: Float> {
     Plain(PlainTable<F>),
     Rolled(RolledTable<F>),
     MicroSlip(Box<Tabled<F, MicroSlipMixing<F>>>),
@@ -576,560 +574,7 @@ where
     }
 }
 
-/// A null pointer is refused only when there is something to read through it.
-fn present<T>(pointer: *const T, count: usize) -> bool {
-    count == 0 || !pointer.is_null()
-}
-
-/// Checks every pointer and count of the list, and each of its atoms, in list order (the
-/// neighbours are checked as they are gathered).
-///
-/// # Safety
-/// As `ss_table_evaluate_*`.
-unsafe fn check_list<F>(
-    atoms: &ss_atoms<F>,
-    list: &ss_neighbours,
-    history: Option<(&ss_history<F>, usize)>,
-    report: &mut ss_list_report,
-) -> i32 {
-    let n = atoms.count;
-    let arrays = [
-        atoms.position.cast::<u8>(),
-        atoms.velocity.cast(),
-        atoms.angular_velocity.cast(),
-        atoms.radius.cast(),
-        atoms.mass.cast(),
-        atoms.types.cast(),
-    ];
-    if arrays.iter().any(|a| !present(*a, n)) {
-        return SS_ERR_NULL;
-    }
-    if n > u32::MAX as usize || atoms.owned > n || list.count > n {
-        return SS_ERR_LENGTH;
-    }
-    let lists = [
-        list.atoms.cast::<u8>(),
-        list.neighbour_counts.cast(),
-        list.first_neighbour.cast(),
-    ];
-    if lists.iter().any(|a| !present(*a, list.count)) {
-        return SS_ERR_NULL;
-    }
-    if let Some((h, needed)) = history {
-        if h.values < needed {
-            return SS_ERR_LENGTH;
-        }
-        if !present(h.first_value, list.count) || !present(h.first_touch, list.count) {
-            return SS_ERR_NULL;
-        }
-    }
-    for ii in 0..list.count {
-        // SAFETY: `atoms` holds `count` entries (the caller's promise).
-        let i = unsafe { *list.atoms.add(ii) };
-        report.atoms = [i64::from(i), -1];
-        if i < 0 || i as usize >= n {
-            return SS_ERR_INDEX;
-        }
-        let i = i as usize;
-        // SAFETY: the per-atom arrays hold an entry for every atom the list names.
-        let (count, first) =
-            unsafe { (*list.neighbour_counts.add(i), *list.first_neighbour.add(i)) };
-        if count < 0 {
-            return SS_ERR_LENGTH;
-        }
-        let count = count as usize;
-        if !present(first, count) {
-            return SS_ERR_NULL;
-        }
-        if let Some((h, _)) = history {
-            // SAFETY: as above.
-            let (values, touch) = unsafe { (*h.first_value.add(i), *h.first_touch.add(i)) };
-            if !present(values, count) || !present(touch, count) {
-                return SS_ERR_NULL;
-            }
-        }
-    }
-    report.atoms = [-1, -1];
-    SS_OK
-}
-
-impl<F: Float, X: Mixing<F>> Tabled<F, X>
-where
-    <X::Law as Law>::State: Flat<F>,
-{
-    /// The list entry: checks, gathers, evaluates through the seam, and on success writes the
-    /// states (when `advance`), the touch flags and the forces back.
-    ///
-    /// # Safety
-    /// As `ss_table_evaluate_*`.
-    unsafe fn evaluate(
-        &mut self,
-        atoms: &ss_atoms<F>,
-        list: &ss_neighbours,
-        history: Option<&ss_history<F>>,
-        loads: &ss_loads<F>,
-        advance: bool,
-        report: &mut ss_list_report,
-    ) -> i32 {
-        let values = <<X::Law as Law>::State as Flat<F>>::VALUES;
-        let Some((table, step)) = &self.ready else {
-            return SS_ERR_NOT_PREPARED;
-        };
-        // SAFETY: forwarded contract.
-        let code = unsafe { check_list(atoms, list, history.map(|h| (h, values)), report) };
-        if code != SS_OK {
-            return code;
-        }
-        let n = atoms.count;
-        if !present(loads.force, n) || !present(loads.torque, n) {
-            return SS_ERR_NULL;
-        }
-        let vectors = |p: *const F| -> &[Vec3<F>] {
-            if n == 0 {
-                return &[];
-            }
-            // SAFETY: three numbers per atom (the caller's promise); `Vec3` is `repr(C)` of
-            // three `F`s, with `F`'s alignment.
-            unsafe { std::slice::from_raw_parts(p.cast::<Vec3<F>>(), n) }
-        };
-        let scalars = |p: *const F| -> &[F] {
-            if n == 0 {
-                return &[];
-            }
-            // SAFETY: one number per atom.
-            unsafe { std::slice::from_raw_parts(p, n) }
-        };
-        let work = &mut self.work;
-        work.material.clear();
-        for k in 0..n {
-            // SAFETY: one type per atom.
-            let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
-            if t < 0 || t as usize >= self.materials {
-                report.atoms = [k as i64, -1];
-                return SS_ERR_MATERIAL;
-            }
-            work.material.push(t as u32);
-        }
-        // Gather the pairs and their states, checking each neighbour, in list order: one pass
-        // over the list.
-        let mut total = 0;
-        for ii in 0..list.count {
-            // SAFETY: checked by `check_list`.
-            total += unsafe { *list.neighbour_counts.add(*list.atoms.add(ii) as usize) } as usize;
-        }
-        work.pairs.resize(total, [0; 2]);
-        work.states.resize(total, Default::default());
-        let mut k = 0;
-        for ii in 0..list.count {
-            // SAFETY: checked by `check_list`.
-            let (i, count, first) = unsafe {
-                let i = *list.atoms.add(ii) as usize;
-                (
-                    i,
-                    *list.neighbour_counts.add(i) as usize,
-                    *list.first_neighbour.add(i),
-                )
-            };
-            // SAFETY: atom i's neighbours hold `count` entries.
-            let neighbours = unsafe { std::slice::from_raw_parts(first, count) };
-            let run = k..k + count;
-            for (&j, pair) in neighbours.iter().zip(&mut work.pairs[run.clone()]) {
-                let j = j & list.index_mask;
-                if j < 0 || j as usize >= n {
-                    report.atoms = [i as i64, i64::from(j)];
-                    return SS_ERR_INDEX;
-                }
-                let j = j as usize;
-                *pair = [i as u32, j as u32];
-            }
-            if let (Some(h), true) = (history, values > 0) {
-                // SAFETY: checked present by `check_list`; `values` numbers per neighbour.
-                let at = unsafe { *h.first_value.add(i) };
-                for (jj, state) in work.states[run].iter_mut().enumerate() {
-                    // SAFETY: as above.
-                    *state = Flat::read(unsafe {
-                        std::slice::from_raw_parts(at.add(jj * h.values), values)
-                    });
-                }
-            } else {
-                work.states[run].fill(Default::default());
-            }
-            k += count;
-        }
-        let contacts = work.pairs.len();
-        work.saved.resize(contacts, Default::default());
-        work.loads.resize(2 * n, Vec3::ZERO);
-        work.force.clear();
-        work.force.resize(n, Vec3::ZERO);
-        work.torque.clear();
-        work.torque.resize(n, Vec3::ZERO);
-        let per_pair = !loads.pair_force.is_null();
-        work.records.clear();
-        if per_pair {
-            work.records.resize(contacts, Interaction::Apart);
-        }
-        let spheres = SphereArrays {
-            position: vectors(atoms.position),
-            velocity: vectors(atoms.velocity),
-            angular_velocity: vectors(atoms.angular_velocity),
-            radius: scalars(atoms.radius),
-            mass: scalars(atoms.mass),
-            material: &work.material,
-        };
-        let outcome = table.evaluate(
-            *step,
-            &spheres,
-            ContactList {
-                pairs: &work.pairs,
-                shifts: &[],
-                pair_states: &mut work.states,
-                walls: &[],
-                wall_states: &mut [],
-            },
-            ListOutput {
-                force: &mut work.force,
-                torque: &mut work.torque,
-                backup: Backup {
-                    states: &mut work.saved,
-                    loads: &mut work.loads,
-                },
-                records: per_pair.then_some(&mut work.records[..]),
-            },
-        );
-        let stats: ListStats<F> = match outcome {
-            Ok(stats) => stats,
-            Err(error) => return list_code(error, &work.pairs, report),
-        };
-        report.contacts = stats.pair_contacts;
-        report.sliding = stats.sliding_contacts;
-        // Scatter: touch flags and (when advancing) states, in list order again. A neighbour
-        // "touches" when it keeps a state: the kernel relaxes an apart pair's state to zero, and
-        // a host that drops the state of a neighbour that does not touch (as LAMMPS does when it
-        // rebuilds its lists) then loses nothing.
-        if let Some(h) = history {
-            let mut k = 0;
-            for ii in 0..list.count {
-                // SAFETY: checked by `check_list`; `values` numbers and one flag per neighbour.
-                unsafe {
-                    let i = *list.atoms.add(ii) as usize;
-                    let count = *list.neighbour_counts.add(i) as usize;
-                    let touch = std::slice::from_raw_parts_mut(*h.first_touch.add(i), count);
-                    let kept = if advance { &work.states } else { &work.saved };
-                    for (flag, state) in touch.iter_mut().zip(&kept[k..k + count]) {
-                        *flag = i32::from(*state != Default::default());
-                    }
-                    if advance && values > 0 {
-                        let at = *h.first_value.add(i);
-                        for (jj, state) in work.states[k..k + count].iter().enumerate() {
-                            state.write(std::slice::from_raw_parts_mut(
-                                at.add(jj * h.values),
-                                values,
-                            ));
-                        }
-                    }
-                    k += count;
-                }
-            }
-        }
-        if per_pair {
-            // SAFETY: three numbers per neighbour (the caller's promise).
-            let out = unsafe { std::slice::from_raw_parts_mut(loads.pair_force, 3 * contacts) };
-            for (place, record) in out.chunks_exact_mut(3).zip(&work.records) {
-                let on_i = match record {
-                    Interaction::Touching(c) => c.force_on_i(),
-                    Interaction::Apart => Vec3::ZERO,
-                };
-                place.copy_from_slice(&[on_i.x, on_i.y, on_i.z]);
-            }
-        }
-        let receivers = if loads.newton == 1 { n } else { atoms.owned };
-        for (out, sums) in [(loads.force, &work.force), (loads.torque, &work.torque)] {
-            // SAFETY: three numbers per atom; not overlapping the inputs (the caller's promise).
-            let out = unsafe { std::slice::from_raw_parts_mut(out, 3 * n) };
-            for (place, sum) in out.chunks_exact_mut(3).zip(&sums[..receivers]) {
-                place[0] += sum.x;
-                place[1] += sum.y;
-                place[2] += sum.z;
-            }
-        }
-        SS_OK
-    }
-
-    /// The walls entry: the selected owned atoms against every wall, through the seam (no
-    /// pairs); on success the states (when `advance`) and the forces written back.
-    ///
-    /// # Safety
-    /// As `ss_table_evaluate_walls_*`.
-    unsafe fn evaluate_walls(
-        &mut self,
-        atoms: &ss_atoms<F>,
-        walls: &ss_walls<F>,
-        loads: &ss_loads<F>,
-        advance: bool,
-        report: &mut ss_list_report,
-    ) -> i32 {
-        let values = <<X::Law as Law>::State as Flat<F>>::VALUES;
-        let Some((table, step)) = &self.ready else {
-            return SS_ERR_NOT_PREPARED;
-        };
-        let n = atoms.owned;
-        let arrays = [
-            atoms.position.cast::<u8>(),
-            atoms.velocity.cast(),
-            atoms.angular_velocity.cast(),
-            atoms.radius.cast(),
-            atoms.mass.cast(),
-            atoms.types.cast(),
-            loads.force.cast(),
-            loads.torque.cast(),
-        ];
-        if arrays.iter().any(|a| !present(*a, n)) || !present(walls.walls, walls.count) {
-            return SS_ERR_NULL;
-        }
-        if n > atoms.count || n > u32::MAX as usize {
-            return SS_ERR_LENGTH;
-        }
-        let needed = if walls.count == 0 {
-            0
-        } else {
-            (walls.count - 1) * walls.wall_stride + values
-        };
-        if values > 0 && (walls.wall_stride < values || walls.stride < needed) {
-            return SS_ERR_LENGTH;
-        }
-        if values > 0 && walls.count > 0 && !present(walls.states, n) {
-            return SS_ERR_NULL;
-        }
-        if walls.material as usize >= self.materials {
-            return SS_ERR_MATERIAL;
-        }
-        let work = &mut self.wall_work;
-        work.walls.clear();
-        for w in 0..walls.count {
-            // SAFETY: `count` walls (the caller's promise).
-            match crate::plane_of(unsafe { &*walls.walls.add(w) }) {
-                Ok(wall) => work.walls.push(soft_sphere::MaterialWall {
-                    wall,
-                    material: walls.material,
-                }),
-                Err(code) => return code,
-            }
-        }
-        // Gather the selected atoms and their states.
-        for v in [&mut work.position, &mut work.velocity, &mut work.spin] {
-            v.clear();
-        }
-        work.index.clear();
-        work.clear.clear();
-        work.radius.clear();
-        work.mass.clear();
-        work.material.clear();
-        work.states.clear();
-        let vector = |p: *const F, k: usize| {
-            // SAFETY: three numbers per atom.
-            unsafe { Vec3::new(*p.add(3 * k), *p.add(3 * k + 1), *p.add(3 * k + 2)) }
-        };
-        for k in 0..n {
-            // SAFETY: one flag per atom when given.
-            if !walls.selected.is_null() && unsafe { *walls.selected.add(k) } & walls.bit == 0 {
-                continue;
-            }
-            // SAFETY: one type per atom.
-            let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
-            if t < 0 || t as usize >= self.materials {
-                report.atoms = [k as i64, -1];
-                return SS_ERR_MATERIAL;
-            }
-            // An atom clear of every wall (the kernel's own test: `radius - distance <= 0`) would
-            // only have its states relaxed to zero: that is done after success, without the seam.
-            let position = vector(atoms.position, k);
-            // SAFETY: one number per atom.
-            let radius = unsafe { *atoms.radius.add(k) };
-            let clear = work
-                .walls
-                .iter()
-                .all(|w| radius - w.wall.distance_to(position) <= F::ZERO);
-            if clear {
-                work.clear.push(k);
-                continue;
-            }
-            work.index.push(k);
-            work.material.push(t as u32);
-            work.position.push(position);
-            work.velocity.push(vector(atoms.velocity, k));
-            work.spin.push(vector(atoms.angular_velocity, k));
-            // SAFETY: one number per atom.
-            unsafe {
-                work.radius.push(*atoms.radius.add(k));
-                work.mass.push(*atoms.mass.add(k));
-            }
-            for w in 0..walls.count {
-                work.states.push(if values > 0 {
-                    // SAFETY: `stride` numbers per atom, checked to hold every wall's state.
-                    Flat::read(unsafe {
-                        std::slice::from_raw_parts(
-                            walls.states.add(k * walls.stride + w * walls.wall_stride),
-                            values,
-                        )
-                    })
-                } else {
-                    Default::default()
-                });
-            }
-        }
-        let m = work.index.len();
-        work.saved.resize(m * walls.count, Default::default());
-        work.loads.resize(2 * m, Vec3::ZERO);
-        work.force.clear();
-        work.force.resize(m, Vec3::ZERO);
-        work.torque.clear();
-        work.torque.resize(m, Vec3::ZERO);
-        let spheres = SphereArrays {
-            position: &work.position,
-            velocity: &work.velocity,
-            angular_velocity: &work.spin,
-            radius: &work.radius,
-            mass: &work.mass,
-            material: &work.material,
-        };
-        let outcome = table.evaluate(
-            *step,
-            &spheres,
-            ContactList {
-                pairs: &[],
-                shifts: &[],
-                pair_states: &mut [],
-                walls: &work.walls,
-                wall_states: &mut work.states,
-            },
-            ListOutput {
-                force: &mut work.force,
-                torque: &mut work.torque,
-                backup: Backup {
-                    states: &mut work.saved,
-                    loads: &mut work.loads,
-                },
-                records: None,
-            },
-        );
-        let stats = match outcome {
-            Ok(stats) => stats,
-            Err(ListError::Wall { sphere, error, .. }) => {
-                report.atoms = [work.index[sphere] as i64, -1];
-                return contact_code(error);
-            }
-            Err(ListError::Sphere { sphere, error }) => {
-                report.atoms = [work.index[sphere] as i64, -1];
-                return contact_code(error);
-            }
-            Err(error) => return list_code(error, &[], report),
-        };
-        report.contacts = stats.wall_contacts;
-        report.sliding = stats.sliding_contacts;
-        if advance && values > 0 {
-            for &k in &work.clear {
-                for w in 0..walls.count {
-                    // SAFETY: as the gather.
-                    let kept = unsafe {
-                        std::slice::from_raw_parts_mut(
-                            walls.states.add(k * walls.stride + w * walls.wall_stride),
-                            values,
-                        )
-                    };
-                    kept.fill(F::ZERO);
-                }
-            }
-        }
-        for (s, &k) in work.index.iter().enumerate() {
-            if advance && values > 0 {
-                for w in 0..walls.count {
-                    // SAFETY: as the gather.
-                    work.states[s * walls.count + w].write(unsafe {
-                        std::slice::from_raw_parts_mut(
-                            walls.states.add(k * walls.stride + w * walls.wall_stride),
-                            values,
-                        )
-                    });
-                }
-            }
-            for (out, sum) in [(loads.force, work.force[s]), (loads.torque, work.torque[s])] {
-                // SAFETY: three numbers per atom; not overlapping the inputs.
-                unsafe {
-                    *out.add(3 * k) += sum.x;
-                    *out.add(3 * k + 1) += sum.y;
-                    *out.add(3 * k + 2) += sum.z;
-                }
-            }
-        }
-        SS_OK
-    }
-
-    /// One pair's contact with the law of its materials, its state read and not written (for a
-    /// host's per-pair report, such as LAMMPS's `single()`).
-    fn pair(
-        &self,
-        (a, b): (usize, usize),
-        (i, j): (&ss_sphere<F>, &ss_sphere<F>),
-        values: Option<&[F]>,
-        out: &mut ss_forces<F>,
-    ) -> i32 {
-        let Some((table, step)) = &self.ready else {
-            return SS_ERR_NOT_PREPARED;
-        };
-        let Some(law) = table.law(a, b) else {
-            return SS_ERR_MATERIAL;
-        };
-        let mut state = match values {
-            Some(values) => Flat::read(values),
-            None => Default::default(),
-        };
-        let (i, j): (Sphere<F>, Sphere<F>) = ((*i).into(), (*j).into());
-        let i = match CheckedSphere::new(i) {
-            Ok(i) => i,
-            Err(e) => return contact_code(e),
-        };
-        let j = match CheckedSphere::new(j) {
-            Ok(j) => j,
-            Err(e) => return contact_code(e),
-        };
-        match law.at(*step).sphere_sphere(&i, &j, &mut state) {
-            Ok(interaction) => {
-                *out = forces_of(interaction);
-                SS_OK
-            }
-            Err(e) => contact_code(e),
-        }
-    }
-}
-
-/// The code of a seam refusal, with the atoms it is about.
-fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_list_report) -> i32 {
-    let atoms = |pair: usize| pairs[pair].map(i64::from);
-    match error {
-        ListError::Sphere { sphere, error } => {
-            report.atoms = [sphere as i64, -1];
-            contact_code(error)
-        }
-        ListError::Pair { pair, error } => {
-            report.atoms = atoms(pair);
-            contact_code(error)
-        }
-        ListError::PairIndex { pair } => {
-            report.atoms = atoms(pair);
-            SS_ERR_INDEX
-        }
-        ListError::Material { sphere, .. } => {
-            report.atoms = [sphere as i64, -1];
-            SS_ERR_MATERIAL
-        }
-        ListError::Length(_) | ListError::Shift { .. } => SS_ERR_LENGTH,
-        ListError::WallMaterial { .. } => SS_ERR_MATERIAL,
-        ListError::Wall { error, .. } => contact_code(error),
-        ListError::TimeStep { .. } => SS_ERR_UNSTABLE_TIME_STEP,
-    }
-}
-
-fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> {
+pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> {
     let m = config.materials;
     if m == 0 || m > SS_MATERIALS_MAX {
         return Err(SS_ERR_MATERIAL);
@@ -1175,7 +620,7 @@ fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> 
 
 /// A table of laws with the elastic-plastic rolling resistance (the smallest inertia checked
 /// here).
-fn rolled_table<F: Float>(
+pub(crate) fn rolled_table<F: Float>(
     config: &ss_table_config<F>,
     impact: HertzImpact<F>,
     micro_slip: MicroSlipMixing<F>,
@@ -1323,7 +768,7 @@ pub(crate) unsafe fn table_evaluate<F: Float>(
 ///
 /// # Safety
 /// `report` must be valid or null.
-unsafe fn reported(
+pub(crate) unsafe fn reported(
     report: *mut ss_list_report,
     run: impl FnOnce(&mut ss_list_report) -> i32,
 ) -> i32 {
@@ -1390,7 +835,7 @@ pub(crate) unsafe fn table_pair<F: Float>(
     each_table!(&table.table, t => table_pair_in(&**t, (a, b), (i, j), values, out))
 }
 
-fn table_pair_in<F: Float, X: Mixing<F>>(
+pub(crate) fn table_pair_in<F: Float, X: Mixing<F>>(
     t: &Tabled<F, X>,
     materials: (usize, usize),
     spheres: (&ss_sphere<F>, &ss_sphere<F>),
@@ -1419,7 +864,7 @@ pub(crate) fn state_values<F: Float>(table: *const ss_table<F>) -> usize {
     each_table!(&table.table, t => values_of(&**t))
 }
 
-fn values_of<F: Float, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
+pub(crate) fn values_of<F: Float, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
 where
     <X::Law as Law>::State: Flat<F>,
 {
@@ -1440,7 +885,11 @@ pub(crate) unsafe fn table_mirror<F: Float>(
     each_table!(&table.table, t => mirror_in(&**t, source, target))
 }
 
-fn mirror_in<F: Float, X: Mixing<F>>(_: &Tabled<F, X>, source: *const F, target: *mut F) -> i32
+pub(crate) fn mirror_in<F: Float, X: Mixing<F>>(
+    _: &Tabled<F, X>,
+    source: *const F,
+    target: *mut F,
+) -> i32
 where
     <X::Law as Law>::State: Flat<F>,
 {
