@@ -397,6 +397,18 @@ fn try_evaluate(
 
 const ROUTES: [Route; 3] = [Route::Auto, Route::Blocks, Route::OneAtATime];
 
+#[test]
+fn the_routes_choose_blocks_as_documented() {
+    type Hertzian = soft_sphere::HertzAA<f32>;
+    // Blocks and one at a time are what they say; the automatic route takes blocks only where
+    // the law says they pay, which no law does today (they measured slower: `Law::VECTORISES`).
+    assert!(Route::Blocks.uses_blocks::<Linear>() && Route::Blocks.uses_blocks::<Hertzian>());
+    assert!(!Route::OneAtATime.uses_blocks::<Linear>());
+    assert!(!Route::OneAtATime.uses_blocks::<Hertzian>());
+    assert!(!Route::Auto.uses_blocks::<Linear>() && !Route::Auto.uses_blocks::<Hertzian>());
+    assert!(!Route::Auto.uses_blocks::<LinearAA<f32>>());
+}
+
 fn try_route(
     route: Route,
     t: &MaterialTable<Linear, 3>,

@@ -26,7 +26,8 @@ use crate::vector::Vec3;
 /// route.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Route {
-    /// The route that measured fastest (`list_bench`): today one at a time, in every build.
+    /// Blocks where the law says they pay ([`Law::VECTORISES`]), else one at a time: today one
+    /// at a time for every law, which measured fastest (`list_bench`, `contact_batch_bench`).
     #[default]
     Auto,
     /// Sorted by pair of materials into blocks of [`LANES`] through the batch path. The blocks
@@ -36,6 +37,19 @@ pub enum Route {
     Blocks,
     /// One sifted pair at a time through the one-contact path.
     OneAtATime,
+}
+
+impl Route {
+    /// Whether this route evaluates law `L`'s touching pairs in blocks: the one place the choice
+    /// between blocks and single calls is made (the list seam and the C ABI's arrays entry ask
+    /// it).
+    pub fn uses_blocks<L: Law>(self) -> bool {
+        match self {
+            Route::Auto => L::VECTORISES,
+            Route::Blocks => true,
+            Route::OneAtATime => false,
+        }
+    }
 }
 
 /// A plane wall made of a material of the table.
@@ -444,10 +458,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
-        let blocks = match route {
-            Route::Auto | Route::OneAtATime => false,
-            Route::Blocks => true,
-        };
+        let blocks = route.uses_blocks::<L>();
         let n = spheres.len();
         let (pairs, shifts, walls) = (list.pairs, list.shifts, list.walls);
         let contacts =

@@ -4,7 +4,8 @@
 use crate::registry::AnyBound;
 use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
 use soft_sphere::{
-    BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, MathBackend, Sphere, Std, Vec3,
+    BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, MathBackend, Route, Sphere,
+    Std, Vec3,
 };
 
 use crate::*;
@@ -329,7 +330,7 @@ impl<F: Float> States<'_, F> {
 
 /// The pairs in blocks of [`LANES`] through the kernel's batch path (`Std` square roots: the
 /// same bits as the single calls'), each pair's state and result written back in order; one at
-/// a time where the kernel says blocks do not pay ([`Law::VECTORISES`]).
+/// a time where the kernel says blocks do not pay ([`Route::Auto`]).
 #[inline(always)]
 pub(crate) fn in_blocks<L: Law>(
     bound: &mut BoundLaw<L>,
@@ -340,8 +341,9 @@ pub(crate) fn in_blocks<L: Law>(
     L::State: Stored<L::Float>,
 {
     let count = out.status.len();
-    if !L::VECTORISES {
-        // Blocks would not pay in this build (Law::VECTORISES): one pair at a time, the same bits.
+    if !Route::Auto.uses_blocks::<L>() {
+        // Blocks would not pay (the kernel's choice, Route::Auto): one pair at a time, the same
+        // bits.
         for k in 0..count {
             let mut state = states.load(k);
             let result = CheckedSphere::new(sphere_at(i, k)).and_then(|a| {
