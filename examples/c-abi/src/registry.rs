@@ -1,6 +1,6 @@
 //! The laws the C ABI offers, listed once in [`with_laws!`]: the handles' enums ([`AnyLaw`],
 //! [`AnyBound`], the tables' [`PlainTable`] and [`RolledTable`]), every dispatch over them
-//! (`each_law!`, `each_plain!`, `each_rolled!`), the constructors from `ss_params` and from a
+//! (`each_law!`, `each_table_of!`), the constructors from `ss_params` and from a
 //! table's configuration, the Hertz family's codes and the names a host shows
 //! (`ss_model_name`, `ss_model_of_name`, which the LAMMPS plugin reads) all follow from it.
 //! Adding a law: its `SS_MODEL_*` constant (the header is generated from constants), then one

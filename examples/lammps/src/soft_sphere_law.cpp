@@ -101,6 +101,9 @@ ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f
 
 const char *SoftSphere::parameter_name(int parameter, int model)
 {
+  // The kernel's words, with where a LAMMPS user sets the two the input script does not name.
+  if (parameter == SS_PARAMETER_SPEED) return "the impact speed (pair_style soft/sphere impact V)";
+  if (parameter == SS_PARAMETER_MASS) return "the smallest atom mass";
   return ss_parameter_name(parameter, model);
 }
 
