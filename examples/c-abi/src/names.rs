@@ -4,7 +4,7 @@
 
 use core::ffi::{CStr, c_char};
 
-use crate::registry::{NAMES, hertz_family};
+use crate::registry::{NAMES, hertz_model};
 use crate::table::{SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED};
 use crate::*;
 
@@ -60,7 +60,7 @@ pub unsafe extern "C" fn ss_model_of_name(name: *const c_char, model: *mut i32) 
 /// impact; `SS_MODEL_HERTZ_MICROSLIP` included), 0 otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn ss_model_is_hertz(model: i32) -> i32 {
-    i32::from(model == SS_MODEL_HERTZ_MICROSLIP || hertz_family(model))
+    i32::from(hertz_model(model))
 }
 
 /// A static C string (the text ends in its NUL).

@@ -17,8 +17,8 @@ use crate::table::{Rolled, Tabled, elastic, elastic_frictionless, linear, linear
 use crate::table::{rolled_elastic, rolled_linear};
 use crate::{
     SS_MODEL_AA, SS_MODEL_AA_LUDING, SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA,
-    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_STATELESS,
-    SS_MODEL_STATELESS, ss_params,
+    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_MICROSLIP,
+    SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, ss_params,
 };
 
 /// Calls `$callback!` with every law, one entry each:
@@ -271,6 +271,12 @@ macro_rules! registry {
 }
 
 with_laws!(registry!$);
+
+/// Whether `model` is of Hertz's family, the listed laws and micro-slip alike (its parameters
+/// are moduli and a declared impact).
+pub(crate) fn hertz_model(model: i32) -> bool {
+    model == SS_MODEL_HERTZ_MICROSLIP || hertz_family(model)
+}
 
 /// The linear normal law of `p`.
 fn linear_normal<F: Float>(p: &ss_params<F>) -> Result<LinearSpringDashpot<F>, ParameterError> {

@@ -14,7 +14,7 @@ use soft_sphere::{
     SphereArrays, TangentialModel, TimeStep, Vec3,
 };
 
-use crate::registry::{PlainTable, RolledTable, hertz_family};
+use crate::registry::{PlainTable, RolledTable, hertz_model};
 use crate::{
     Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_MICROSLIP_SPRINGS, SS_MODEL_HERTZ_MICROSLIP, SS_OK,
     SS_PARAMETER_NONE, parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
@@ -583,7 +583,7 @@ pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTabl
         speed: config.largest_impact_speed,
         effective_radius: config.largest_effective_radius,
     };
-    let hertz = config.model == SS_MODEL_HERTZ_MICROSLIP || hertz_family(config.model);
+    let hertz = hertz_model(config.model);
     if hertz {
         // The declared impact is checked by the Hertz law: probe it with a valid material.
         let probe = ElasticMaterial {
