@@ -7,7 +7,7 @@
 use host_tests::pairs::{Pair, in_blocks, one_at_a_time};
 use host_tests::strategies::{Collision, collision, config};
 use proptest::prelude::*;
-use soft_sphere::batch::{ContactBlock, LANES, PairBlock};
+use soft_sphere::batch::{BlockGroup, BlockPairs, ContactBlock, LANES, PairBlock};
 use soft_sphere::{
     CheckedSphere, ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction,
     Law, LeverArm, LinearAA, LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding,
@@ -315,6 +315,86 @@ fn a_tolerating_step_counts_the_same_contacts_in_blocks() {
     }
     assert_eq!(one.unstable_contacts(), 1);
     assert_eq!(blocks.unstable_contacts(), 1);
+}
+
+/// A host's pairs for [`BlockGroup`]: each place's spheres and state, and what was scattered
+/// to it, in order.
+struct Places {
+    pairs: Vec<(Sphere<f64>, Sphere<f64>)>,
+    states: Vec<SpringDisplacement<f64>>,
+    scattered: Vec<(usize, Result<Interaction<f64>, ContactError>)>,
+}
+
+impl<L: Law<Float = f64, State = SpringDisplacement<f64>>> BlockPairs<L> for Places {
+    fn gather(&self, k: usize) -> (Sphere<f64>, Sphere<f64>, SpringDisplacement<f64>) {
+        (self.pairs[k].0, self.pairs[k].1, self.states[k])
+    }
+
+    fn scatter(
+        &mut self,
+        k: usize,
+        outcome: Result<Interaction<f64>, ContactError>,
+        state: &SpringDisplacement<f64>,
+    ) {
+        self.states[k] = *state;
+        self.scattered.push((k, outcome));
+    }
+}
+
+/// A group of blocks over a host's arrays, for runs longer and shorter than the group holds
+/// (3, 8 x [`LANES`] and more, never a whole number of blocks in the longest) and places in
+/// any order: each named place scattered once, in the order named, with the outcome and state
+/// the pair alone gives (errors keeping their state), and no other place read or written.
+#[test]
+fn a_block_group_gives_each_place_the_one_contact_outcome() {
+    let normal = LinearSpringDashpot::new(1000.0, 0.7).unwrap();
+    let p = TangentialParameters::new(285.7, 0.5, 0.4).unwrap();
+    let law = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
+    let dt = law.time_step(1e-7, 1.0).unwrap();
+    let paths: Vec<_> = status_paths::<f64>()
+        .iter()
+        .map(|&(_, i, j)| (i, j))
+        .collect();
+    let pairs: Vec<_> = paths
+        .iter()
+        .cycle()
+        .take(5 * paths.len() + 3)
+        .copied()
+        .collect();
+    assert!(pairs.len() > 8 * LANES && pairs.len() % LANES != 0);
+    let states: Vec<_> = (0..pairs.len())
+        .map(SpringDisplacement::preloaded)
+        .collect();
+    let mut group = BlockGroup::default();
+    let every: Vec<usize> = (0..pairs.len()).rev().collect();
+    let odd: Vec<usize> = (1..pairs.len()).step_by(2).collect();
+    for places in [&every[..], &odd[..], &[7, 2, 40][..], &[][..]] {
+        let mut host = Places {
+            pairs: pairs.clone(),
+            states: states.clone(),
+            scattered: Vec::new(),
+        };
+        let mut bound = law.at(dt);
+        group.evaluate(&mut bound, places.iter().copied(), &mut host);
+        let order: Vec<usize> = host.scattered.iter().map(|&(k, _)| k).collect();
+        assert_eq!(order, places, "each place once, in order");
+        let mut one = law.at(dt);
+        for (k, outcome) in &host.scattered {
+            let mut state = states[*k];
+            let (i, j) = pairs[*k];
+            let alone = CheckedSphere::new(i).and_then(|i| {
+                let j = CheckedSphere::new(j)?;
+                one.sphere_sphere(&i, &j, &mut state)
+            });
+            assert_eq!(format!("{outcome:?}"), format!("{alone:?}"), "place {k}");
+            assert_eq!(host.states[*k], state, "place {k}");
+        }
+        for k in (0..pairs.len()).filter(|k| !places.contains(k)) {
+            assert_eq!(host.states[k], states[k], "place {k} was not named");
+        }
+        let errors = host.scattered.iter().filter(|(_, o)| o.is_err()).count();
+        assert!(places.len() < 4 || errors > 0, "the run holds bad pairs");
+    }
 }
 
 /// The law of a random collision: `k_n` from its overlap fraction, the rest from its material.

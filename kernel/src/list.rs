@@ -9,7 +9,7 @@
 //! the spheres present ([`MaterialTable::time_step`]): every pair of materials present at the
 //! smallest effective mass its spheres give, and every wall's material.
 
-use crate::batch::{ContactBlock, LANES, PairBlock};
+use crate::batch::{BlockGroup, BlockPairs};
 use crate::body::{Sphere, Wall, effective_mass};
 use crate::checked::CheckedSphere;
 use crate::engine::{BoundLaw, Law};
@@ -30,7 +30,7 @@ pub enum Route {
     /// at a time for every law, which measured fastest (`list_bench`, `contact_batch_bench`).
     #[default]
     Auto,
-    /// Sorted by pair of materials into blocks of [`LANES`] through the batch path. The blocks
+    /// Sorted by pair of materials into blocks of [`LANES`](crate::batch::LANES) through the batch path. The blocks
     /// are evaluated in vector registers (with the `Std` backend in an AVX build), but gathering
     /// them from the arrays, sorting and scattering cost more than that saves: 1.3 times slower
     /// than one at a time in `list_bench` (`x86-64-v3`, 10,000 spheres).
@@ -599,10 +599,6 @@ fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
 /// Candidate pairs sifted for contact at a time.
 const SIFT: usize = 256;
 
-/// Blocks gathered before the first is evaluated (as the scene does: a block read as vectors
-/// straight after its lanes were stored one by one waits on every load).
-const GROUP: usize = 8;
-
 /// Every pair, chunk by chunk: each chunk's states copied into `saved` just before it is
 /// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
 /// committed in list order. Stops at the first chunk with a refused pair, naming the first in
@@ -696,15 +692,13 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
 }
 
 /// The working memory of one chunk: the sifted places (in list order), the same sorted by pair
-/// of materials, a group of gathered blocks, and each place's forces and whether it touches.
+/// of materials, each place's forces and whether it touches, and the batch path's blocks.
 struct Staged<F: Float, S> {
     touching: [u16; SIFT],
     sorted: [u16; SIFT],
     forces: [ContactForces<F>; SIFT],
     touches: [bool; SIFT],
-    blocks: [PairBlock<F, LANES>; GROUP],
-    states: [[S; LANES]; GROUP],
-    out: [ContactBlock<F, LANES>; GROUP],
+    group: BlockGroup<F, S>,
 }
 
 impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
@@ -714,9 +708,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             sorted: [0; SIFT],
             forces: [ContactForces::default(); SIFT],
             touches: [false; SIFT],
-            blocks: [PairBlock::default(); GROUP],
-            states: [[S::default(); LANES]; GROUP],
-            out: [ContactBlock::default(); GROUP],
+            group: BlockGroup::default(),
         }
     }
 
@@ -815,68 +807,69 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             self.sorted[place[a][b]] = k;
             place[a][b] += 1;
         }
-        let mut failed: Option<(usize, ContactError)> = None;
+        let mut run = Run {
+            spheres,
+            chunk,
+            shifts,
+            states,
+            saved,
+            forces: &mut self.forces,
+            touches: &mut self.touches,
+            failed: None,
+        };
         for (a, row) in counts.iter().enumerate() {
             for (b, &count) in row.iter().enumerate() {
-                let run = &self.sorted[starts[a][b]..starts[a][b] + count];
-                for group in run.chunks(LANES * GROUP) {
-                    let lanes = group.chunks(LANES);
-                    for ((lanes, block), block_states) in
-                        lanes.clone().zip(&mut self.blocks).zip(&mut self.states)
-                    {
-                        for (lane, state) in block_states.iter_mut().enumerate() {
-                            match lanes.get(lane) {
-                                Some(&k) => {
-                                    let k = usize::from(k);
-                                    let [i, j] = chunk[k].map(|x| x as usize);
-                                    let j_at = shifted(spheres.sphere(j), shift(shifts, k));
-                                    block.set(lane, &spheres.sphere(i), &j_at);
-                                    *state = saved[k];
-                                }
-                                // An unused lane: spheres of no size, refused and ignored.
-                                None => block.set(lane, &Sphere::default(), &Sphere::default()),
-                            }
-                        }
-                    }
-                    for (((lanes, block_states), out), block) in lanes
-                        .zip(&mut self.states)
-                        .zip(&mut self.out)
-                        .zip(&self.blocks)
-                    {
-                        evaluate_block(&mut bound[a][b], block, block_states, out);
-                        for (lane, &k) in lanes.iter().enumerate() {
-                            let k = usize::from(k);
-                            match out.outcome(lane) {
-                                Ok(interaction) => {
-                                    states[k] = block_states[lane];
-                                    self.touches[k] = interaction.forces().is_some();
-                                    if let Interaction::Touching(forces) = interaction {
-                                        self.forces[k] = forces;
-                                    }
-                                }
-                                Err(error) => {
-                                    if failed.is_none_or(|(first, _)| k < first) {
-                                        failed = Some((k, error));
-                                    }
-                                }
-                            }
-                        }
-                    }
-                }
+                let places = &self.sorted[starts[a][b]..starts[a][b] + count];
+                let places = places.iter().map(|&k| usize::from(k));
+                self.group.evaluate(&mut bound[a][b], places, &mut run);
             }
         }
-        failed
+        run.failed
     }
 }
 
-/// One block through the kernel's batch path, in a function of its own: there the compiler
-/// keeps the lanes in vector registers (inlined into the large chunk loop, it did not).
-#[inline(never)]
-fn evaluate_block<L: Law>(
-    law: &mut BoundLaw<L>,
-    block: &PairBlock<L::Float, LANES>,
-    states: &mut [L::State; LANES],
-    out: &mut ContactBlock<L::Float, LANES>,
-) {
-    law.sphere_pairs(block, states, out);
+/// One chunk's pairs as the batch path reads and writes them: the spheres from the arrays (j
+/// shifted to its image), the states from the chunk's copy, the forces and whether each touches
+/// kept by place, the first refused pair in list order.
+struct Run<'a, F: Float, S, P> {
+    spheres: &'a P,
+    chunk: &'a [[u32; 2]],
+    shifts: &'a [Vec3<F>],
+    states: &'a mut [S],
+    saved: &'a [S],
+    forces: &'a mut [ContactForces<F>; SIFT],
+    touches: &'a mut [bool; SIFT],
+    failed: Option<(usize, ContactError)>,
+}
+
+impl<L: Law, P: Spheres<L::Float>> BlockPairs<L> for Run<'_, L::Float, L::State, P> {
+    #[inline(always)]
+    fn gather(&self, k: usize) -> (Sphere<L::Float>, Sphere<L::Float>, L::State) {
+        let [i, j] = self.chunk[k].map(|x| x as usize);
+        let j_at = shifted(self.spheres.sphere(j), shift(self.shifts, k));
+        (self.spheres.sphere(i), j_at, self.saved[k])
+    }
+
+    #[inline(always)]
+    fn scatter(
+        &mut self,
+        k: usize,
+        outcome: Result<Interaction<L::Float>, ContactError>,
+        state: &L::State,
+    ) {
+        match outcome {
+            Ok(interaction) => {
+                self.states[k] = *state;
+                self.touches[k] = interaction.forces().is_some();
+                if let Interaction::Touching(forces) = interaction {
+                    self.forces[k] = forces;
+                }
+            }
+            Err(error) => {
+                if self.failed.is_none_or(|(first, _)| k < first) {
+                    self.failed = Some((k, error));
+                }
+            }
+        }
+    }
 }

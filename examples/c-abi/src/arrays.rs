@@ -2,7 +2,7 @@
 //! reading and writing, and the pairs through the kernel's blocks or one at a time.
 
 use crate::registry::AnyBound;
-use soft_sphere::batch::{ContactBlock, LANES, PairBlock, SphereLanes};
+use soft_sphere::batch::{BlockGroup, BlockPairs};
 use soft_sphere::{
     BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, MathBackend, Route, Sphere,
     Std, Vec3,
@@ -201,27 +201,6 @@ impl<'a, F: Float> Outputs<'a, F> {
         })
     }
 
-    /// A block of `N` pairs from `start`, every one of them a success: what [`Outputs::set`]
-    /// writes for each.
-    #[inline(always)]
-    fn set_block<const N: usize>(&mut self, start: usize, block: &ContactBlock<F, N>) {
-        for lane in 0..N {
-            let (f, a, b) = (
-                block.force_on_j(lane),
-                block.torque_on_i.get(lane),
-                block.torque_on_j.get(lane),
-            );
-            let (touching, sliding) = (block.touching(lane), block.sliding[lane]);
-            let scalars = [block.overlap[lane], block.normal_force[lane]];
-            self.write(
-                start + lane,
-                scalars,
-                [f, a, b],
-                [touching, sliding].map(i32::from),
-            );
-        }
-    }
-
     /// Pair `k`'s result: its forces on success, only its code on error.
     #[inline(always)]
     fn set(&mut self, k: usize, result: Result<Interaction<F>, ContactError>) {
@@ -328,15 +307,15 @@ impl<F: Float> States<'_, F> {
     }
 }
 
-/// The pairs in blocks of [`LANES`] through the kernel's batch path (`Std` square roots: the
+/// The pairs in blocks through the kernel's batch path ([`BlockGroup`]; `Std` square roots: the
 /// same bits as the single calls'), each pair's state and result written back in order; one at
 /// a time where the kernel says blocks do not pay ([`Route::Auto`]).
 #[inline(always)]
-pub(crate) fn in_blocks<L: Law>(
+pub(crate) fn in_blocks<'a, L: Law>(
     bound: &mut BoundLaw<L>,
-    (i, j): (&SphereSlices<'_, L::Float>, &SphereSlices<'_, L::Float>),
-    states: &mut States<'_, L::Float>,
-    out: &mut Outputs<'_, L::Float>,
+    (i, j): (&SphereSlices<'a, L::Float>, &SphereSlices<'a, L::Float>),
+    states: &mut States<'a, L::Float>,
+    out: &mut Outputs<'a, L::Float>,
 ) where
     L::State: Stored<L::Float>,
 {
@@ -357,65 +336,42 @@ pub(crate) fn in_blocks<L: Law>(
         }
         return;
     }
-    let mut block = PairBlock::<L::Float, LANES>::default();
-    let mut results = ContactBlock::default();
-    for start in (0..count).step_by(LANES) {
-        let lanes = LANES.min(count - start);
-        let mut lane_states = [L::State::default(); LANES];
-        if lanes == LANES {
-            // Array to array, a vector at a time.
-            fill(&mut block.i, i, start);
-            fill(&mut block.j, j, start);
-        }
-        for (lane, state) in lane_states.iter_mut().enumerate() {
-            // Unused lanes repeat the last pair and are ignored.
-            let k = start + lane.min(lanes - 1);
-            if lanes < LANES {
-                block.set(lane, &sphere_at(i, k), &sphere_at(j, k));
-            }
-            *state = states.load(k);
-        }
-        bound.sphere_pairs(&block, &mut lane_states, &mut results);
-        let all_ok = (0..lanes).all(|lane| results.outcome(lane).is_ok());
-        if all_ok && lanes == LANES {
-            out.set_block(start, &results);
-            for (lane, state) in lane_states.iter().enumerate() {
-                states.store(start + lane, state);
-            }
-            continue;
-        }
-        for (lane, state) in lane_states.iter().enumerate().take(lanes) {
-            let result = results.outcome(lane);
-            if result.is_ok() {
-                states.store(start + lane, state);
-            }
-            out.set(start + lane, result);
-        }
-    }
+    let mut pairs = Pairs { i, j, states, out };
+    BlockGroup::default().evaluate(bound, 0..count, &mut pairs);
 }
 
-/// Lanes `start..start + N` of the spheres' arrays into a block.
-#[inline(always)]
-pub(crate) fn fill<F: Float, const N: usize>(
-    lanes: &mut SphereLanes<F, N>,
-    s: &SphereSlices<'_, F>,
-    start: usize,
-) {
-    let columns = [
-        &mut lanes.position.x,
-        &mut lanes.position.y,
-        &mut lanes.position.z,
-        &mut lanes.velocity.x,
-        &mut lanes.velocity.y,
-        &mut lanes.velocity.z,
-        &mut lanes.angular_velocity.x,
-        &mut lanes.angular_velocity.y,
-        &mut lanes.angular_velocity.z,
-        &mut lanes.radius,
-        &mut lanes.mass,
-    ];
-    for (column, array) in columns.into_iter().zip(s) {
-        column.copy_from_slice(&array[start..start + N]);
+/// The call's arrays as the kernel's batch path reads and writes them.
+struct Pairs<'p, 'a, F> {
+    i: &'p SphereSlices<'a, F>,
+    j: &'p SphereSlices<'a, F>,
+    states: &'p mut States<'a, F>,
+    out: &'p mut Outputs<'a, F>,
+}
+
+impl<L: Law> BlockPairs<L> for Pairs<'_, '_, L::Float>
+where
+    L::State: Stored<L::Float>,
+{
+    #[inline(always)]
+    fn gather(&self, k: usize) -> (Sphere<L::Float>, Sphere<L::Float>, L::State) {
+        (
+            sphere_at(self.i, k),
+            sphere_at(self.j, k),
+            self.states.load(k),
+        )
+    }
+
+    #[inline(always)]
+    fn scatter(
+        &mut self,
+        k: usize,
+        outcome: Result<Interaction<L::Float>, ContactError>,
+        state: &L::State,
+    ) {
+        if outcome.is_ok() {
+            self.states.store(k, state);
+        }
+        self.out.set(k, outcome);
     }
 }
 
