@@ -37,22 +37,7 @@ pub const SS_ERR_POISSON_RATIO: i32 = 14;
 /// mass, a Hertz overlap past the declared impact's): explicit integration would be unstable.
 pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 
-/// The stateless (simplified) law: no tangential history is read or written.
-pub const SS_MODEL_STATELESS: i32 = 0;
-/// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
-pub const SS_MODEL_AA: i32 = 1;
-/// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
-pub const SS_MODEL_AA_LUDING: i32 = 2;
-/// No friction: normal force only (no tangential force, no torque, no state).
-pub const SS_MODEL_FRICTIONLESS: i32 = 3;
-/// Hertz, no friction.
-pub const SS_MODEL_HERTZ_FRICTIONLESS: i32 = 4;
-/// Hertz with the stateless Mindlin law.
-pub const SS_MODEL_HERTZ_STATELESS: i32 = 5;
-/// Hertz with Mindlin's stored spring and Model AA's cap.
-pub const SS_MODEL_HERTZ_AA: i32 = 6;
-/// Hertz with Mindlin's stored spring and Luding's reset.
-pub const SS_MODEL_HERTZ_AA_LUDING: i32 = 7;
+// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_AA_LUDING: registry.rs's list.
 /// Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
 /// tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
 /// not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).

@@ -39,6 +39,7 @@ mod types;
 
 pub use arrays::*;
 pub use codes::*;
+pub use registry::*; // the laws' SS_MODEL_* codes
 pub use types::*;
 
 pub use names::{

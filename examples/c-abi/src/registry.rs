@@ -3,9 +3,9 @@
 //! (`each_law!`, `each_table_of!`), the constructors from `ss_params` and from a
 //! table's configuration, the Hertz family's codes and the names a host shows
 //! (`ss_model_name`, `ss_model_of_name`, which the LAMMPS plugin reads) all follow from it.
-//! Adding a law: its `SS_MODEL_*` constant (the header is generated from constants), then one
-//! entry here. Micro-slip is the one law outside it: its state does not fit `ss_state`, so only
-//! the tables take it (`table.rs`).
+//! So do the `SS_MODEL_*` codes (the header test writes them into the header from the list):
+//! adding a law is one entry here. Micro-slip is the one law outside it: its state does not fit
+//! `ss_state`, so only the tables take it (`table.rs`).
 
 use soft_sphere::{
     BoundLaw, ContactLaw, Float, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
@@ -15,28 +15,33 @@ use soft_sphere::{
 
 use crate::table::{Rolled, Tabled, elastic, elastic_frictionless, linear, linear_frictionless};
 use crate::table::{rolled_elastic, rolled_linear};
-use crate::{
-    SS_MODEL_AA, SS_MODEL_AA_LUDING, SS_MODEL_FRICTIONLESS, SS_MODEL_HERTZ_AA,
-    SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_HERTZ_FRICTIONLESS, SS_MODEL_HERTZ_MICROSLIP,
-    SS_MODEL_HERTZ_STATELESS, SS_MODEL_STATELESS, ss_params,
-};
+use crate::{SS_MODEL_HERTZ_MICROSLIP, ss_params};
 
-/// Calls `$callback!` with every law, one entry each:
-/// `Variant = SS_MODEL_CODE, "name", family, TangentialSlot, tangential;` where the family is
-/// `linear` (the linear spring-dashpot, `TangentialParameters`) or `hertz` (Hertz,
+/// Calls `$callback!` with every law, one entry each: its code's documentation, then
+/// `Variant = SS_MODEL_CODE = value, "name", family, TangentialSlot, tangential;` where the
+/// family is `linear` (the linear spring-dashpot, `TangentialParameters`) or `hertz` (Hertz,
 /// `MindlinParameters`), and `tangential` makes the slot from the family's parameters (a tuple
-/// struct's name) or is `frictionless` (no tangential parameters are read).
+/// struct's name) or is `frictionless` (no tangential parameters are read). The header test
+/// reads these lines to write the `SS_MODEL_*` constants into the C header.
 macro_rules! with_laws {
     ($callback:ident ! $($d:tt)?) => {
         $callback! { $($d)?
-            Stateless = SS_MODEL_STATELESS, "stateless", linear, Stateless<F>, Stateless;
-            ModelAA = SS_MODEL_AA, "aa", linear, ModelAA<F>, ModelAA;
-            ModelAALuding = SS_MODEL_AA_LUDING, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
-            Frictionless = SS_MODEL_FRICTIONLESS, "frictionless", linear, Frictionless, frictionless;
-            HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS, "hertz/frictionless", hertz, Frictionless, frictionless;
-            HertzStateless = SS_MODEL_HERTZ_STATELESS, "hertz/stateless", hertz, MindlinStateless<F>, MindlinStateless;
-            HertzAA = SS_MODEL_HERTZ_AA, "hertz/aa", hertz, MindlinAA<F>, MindlinAA;
-            HertzAALuding = SS_MODEL_HERTZ_AA_LUDING, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
+            /// The stateless (simplified) law: no tangential history is read or written.
+            Stateless = SS_MODEL_STATELESS = 0, "stateless", linear, Stateless<F>, Stateless;
+            /// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
+            ModelAA = SS_MODEL_AA = 1, "aa", linear, ModelAA<F>, ModelAA;
+            /// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
+            ModelAALuding = SS_MODEL_AA_LUDING = 2, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
+            /// No friction: normal force only (no tangential force, no torque, no state).
+            Frictionless = SS_MODEL_FRICTIONLESS = 3, "frictionless", linear, Frictionless, frictionless;
+            /// Hertz, no friction.
+            HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS = 4, "hertz/frictionless", hertz, Frictionless, frictionless;
+            /// Hertz with the stateless Mindlin law.
+            HertzStateless = SS_MODEL_HERTZ_STATELESS = 5, "hertz/stateless", hertz, MindlinStateless<F>, MindlinStateless;
+            /// Hertz with Mindlin's stored spring and Model AA's cap.
+            HertzAA = SS_MODEL_HERTZ_AA = 6, "hertz/aa", hertz, MindlinAA<F>, MindlinAA;
+            /// Hertz with Mindlin's stored spring and Luding's reset.
+            HertzAALuding = SS_MODEL_HERTZ_AA_LUDING = 7, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
         }
     };
 }
@@ -139,9 +144,17 @@ macro_rules! rolls {
     };
 }
 
-/// The enums, constructors and names, from the list.
+/// The codes, enums, constructors and names, from the list.
 macro_rules! registry {
-    ($d:tt $($variant:ident = $code:ident, $name:literal, $family:ident, $t:ty, $make:ident;)*) => {
+    ($d:tt $(
+        $(#[$doc:meta])*
+        $variant:ident = $code:ident = $value:literal, $name:literal, $family:ident, $t:ty, $make:ident;
+    )*) => {
+        $(
+            $(#[$doc])*
+            pub const $code: i32 = $value;
+        )*
+
         /// Which law a handle holds.
         #[derive(Clone, Copy, Debug)]
         pub(crate) enum AnyLaw<F: Float> {

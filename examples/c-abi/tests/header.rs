@@ -3,8 +3,10 @@
 //!
 //! The f32 and f64 entry points are written once, as the `entry_points!` macro; cbindgen does not
 //! expand macros, so this test expands its invocations (a plain substitution of the macro's
-//! parameters) and hands cbindgen the source with the expansions appended. The modules' items
-//! join the crate root's, as one file.
+//! parameters) and hands cbindgen the source with the expansions appended. The laws' `SS_MODEL_*`
+//! codes are made by the registry's macro from its list (`src/registry.rs`); this test writes
+//! each entry's documentation and code as a constant where `codes.rs` names the list. The
+//! modules' items join the crate root's, as one file.
 
 use std::path::PathBuf;
 
@@ -41,6 +43,37 @@ fn expanded(source: &str) -> String {
     out
 }
 
+/// The marker in `codes.rs` where the registry's codes belong.
+const CODES_MARKER: &str = "// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_AA_LUDING: registry.rs's list.\n";
+
+/// The `SS_MODEL_*` constants of the registry's list (`with_laws!`), as Rust source: each
+/// entry's doc lines, then `pub const CODE: i32 = value;`.
+fn registry_codes(registry: &str) -> String {
+    let list = registry
+        .split_once("macro_rules! with_laws {")
+        .expect("the list of laws")
+        .1;
+    let list = list.split_once("$callback! { $($d)?").expect("the list's start").1;
+    let list = list.split_once('}').expect("the list's end").0;
+    let mut out = String::new();
+    let mut entries = 0;
+    for line in list.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        if line.starts_with("///") {
+            out.push_str(line);
+            out.push('\n');
+            continue;
+        }
+        let mut parts = line.split(',').next().unwrap().split('=').map(str::trim).skip(1);
+        let (Some(code), Some(value)) = (parts.next(), parts.next()) else {
+            panic!("an entry without a code and value: {line}");
+        };
+        out.push_str(&format!("pub const {code}: i32 = {value};\n"));
+        entries += 1;
+    }
+    assert!(entries >= 8, "the list holds every law ({entries} read)");
+    out
+}
+
 #[test]
 fn header_is_current() {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
@@ -53,7 +86,8 @@ fn header_is_current() {
     ];
     let mut root = root
         .replace("#[macro_use]\nmod registry;", "")
-        .replace("#[macro_use]\nmod exports;", "");
+        .replace("#[macro_use]\nmod exports;", "")
+        .replace("pub use registry::*; // the laws' SS_MODEL_* codes\n", "");
     for module in modules {
         root = root
             .replace(&format!("pub mod {module};\n"), "")
@@ -65,8 +99,15 @@ fn header_is_current() {
         }
     }
     let mut source = root;
+    let registry = std::fs::read_to_string(crate_dir.join("src/registry.rs")).unwrap();
     for module in modules {
         let text = std::fs::read_to_string(crate_dir.join(format!("src/{module}.rs"))).unwrap();
+        let text = if module == "codes" {
+            assert!(text.contains(CODES_MARKER), "codes.rs names the registry's list");
+            text.replace(CODES_MARKER, &registry_codes(&registry))
+        } else {
+            text
+        };
         let text: String = text
             .lines()
             .filter(|line| !line.starts_with("//!"))
