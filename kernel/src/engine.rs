@@ -94,7 +94,10 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         BoundLaw::new(*self, time_step)
     }
 
-    /// What [`BoundLaw::sphere_sphere`] calls.
+    /// What [`BoundLaw::sphere_sphere`] calls: the law's own evaluation, which for
+    /// [`ContactLaw`](crate::ContactLaw) lives in `law.rs` beside the one-contact path whose
+    /// private core it shares (the bound law is the engine's handle; the physics stays with the
+    /// law).
     ///
     /// # Errors
     /// As [`BoundLaw::sphere_sphere`].

@@ -657,11 +657,11 @@ where
     }
 
     #[inline(always)]
-    fn evaluate_pairs<const LANES: usize>(
+    fn evaluate_pairs<const WIDTH: usize>(
         bound: &mut BoundLaw<Self>,
-        block: &PairBlock<F, LANES>,
-        states: &mut [Ro::State<T::State>; LANES],
-        out: &mut ContactBlock<F, LANES>,
+        block: &PairBlock<F, WIDTH>,
+        states: &mut [Ro::State<T::State>; WIDTH],
+        out: &mut ContactBlock<F, WIDTH>,
     ) {
         batch::sphere_pairs(bound, block, states, out);
     }
