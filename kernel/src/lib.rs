@@ -167,8 +167,10 @@
 //! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
 //! [`ContactLaw::stored_energy`] says what a contact's springs hold, for energy accounts.
 //!
-//! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `N` pairs given as
-//! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers. It pays
+//! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `WIDTH` pairs given as
+//! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers;
+//! [`batch::BlockGroup`] gathers such blocks from an engine's own arrays and scatters the
+//! outcomes back (the list seam and the C ABI use it). It pays
 //! with a square root LLVM can widen: the `Std` backend (feature `std`: std's `sqrt`, the same
 //! correctly rounded bits as [`Libm`]'s) and a build for the CPU
 //! (`RUSTFLAGS="-C target-cpu=x86-64-v3"`); [`Law::VECTORISES`] says whether it does.
