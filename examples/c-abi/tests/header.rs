@@ -44,7 +44,8 @@ fn expanded(source: &str) -> String {
 }
 
 /// The marker in `codes.rs` where the registry's codes belong.
-const CODES_MARKER: &str = "// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_AA_LUDING: registry.rs's list.\n";
+const CODES_MARKER: &str =
+    "// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_AA_LUDING: registry.rs's list.\n";
 
 /// The `SS_MODEL_*` constants of the registry's list (`with_laws!`), as Rust source: each
 /// entry's doc lines, then `pub const CODE: i32 = value;`.
@@ -53,7 +54,10 @@ fn registry_codes(registry: &str) -> String {
         .split_once("macro_rules! with_laws {")
         .expect("the list of laws")
         .1;
-    let list = list.split_once("$callback! { $($d)?").expect("the list's start").1;
+    let list = list
+        .split_once("$callback! { $($d)?")
+        .expect("the list's start")
+        .1;
     let list = list.split_once('}').expect("the list's end").0;
     let mut out = String::new();
     let mut entries = 0;
@@ -63,7 +67,13 @@ fn registry_codes(registry: &str) -> String {
             out.push('\n');
             continue;
         }
-        let mut parts = line.split(',').next().unwrap().split('=').map(str::trim).skip(1);
+        let mut parts = line
+            .split(',')
+            .next()
+            .unwrap()
+            .split('=')
+            .map(str::trim)
+            .skip(1);
         let (Some(code), Some(value)) = (parts.next(), parts.next()) else {
             panic!("an entry without a code and value: {line}");
         };
@@ -103,7 +113,10 @@ fn header_is_current() {
     for module in modules {
         let text = std::fs::read_to_string(crate_dir.join(format!("src/{module}.rs"))).unwrap();
         let text = if module == "codes" {
-            assert!(text.contains(CODES_MARKER), "codes.rs names the registry's list");
+            assert!(
+                text.contains(CODES_MARKER),
+                "codes.rs names the registry's list"
+            );
             text.replace(CODES_MARKER, &registry_codes(&registry))
         } else {
             text

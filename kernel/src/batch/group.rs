@@ -60,7 +60,8 @@ impl<F: Float, S: ContactState> BlockGroup<F, S> {
     /// ([`BoundLaw::sphere_pairs`]): each gathered from `pairs`, and its outcome and state
     /// scattered back to it in the order of `places`. Every pair gets exactly what
     /// [`BoundLaw::sphere_sphere`] gives it one at a time, errors included; a bad pair does not
-    /// disturb the others.
+    /// disturb the others. Name each place once (a place named twice may be gathered twice
+    /// before it is scattered, as a contact list never holds a pair twice).
     ///
     /// ```
     /// use soft_sphere::batch::{BlockGroup, BlockPairs};
