@@ -1703,7 +1703,9 @@ int32_t ss_advance_sphere_f64(const ss_law_f64 *law,
 
 /**
  * Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
- * (infinite at e = 0). `*out` is untouched on error.
+ * (infinite at e = 0), from the normal law of `params.model`'s family (micro-slip's is
+ * Hertz's). `SS_ERR_UNKNOWN_MODEL` for a code no law has; `*out` is untouched on
+ * error.
  *
  * # Safety
  * All pointers must be valid or null.
@@ -1993,7 +1995,9 @@ int32_t ss_advance_sphere_f32(const ss_law_f32 *law,
 
 /**
  * Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
- * (infinite at e = 0). `*out` is untouched on error.
+ * (infinite at e = 0), from the normal law of `params.model`'s family (micro-slip's is
+ * Hertz's). `SS_ERR_UNKNOWN_MODEL` for a code no law has; `*out` is untouched on
+ * error.
  *
  * # Safety
  * All pointers must be valid or null.

@@ -165,7 +165,9 @@ macro_rules! entry_points {
         }
 
         /// Contact duration `t_c` (s) of a free binary impact with effective mass `m_star`
-        /// (infinite at e = 0). `*out` is untouched on error.
+        /// (infinite at e = 0), from the normal law of `params.model`'s family (micro-slip's is
+        /// Hertz's). `SS_ERR_UNKNOWN_MODEL` for a code no law has; `*out` is untouched on
+        /// error.
         ///
         /// # Safety
         /// All pointers must be valid or null.

@@ -53,7 +53,7 @@ pub use table::{
     ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report, ss_walls,
 };
 
-use registry::{AnyBound, AnyLaw, hertz_family};
+use registry::{AnyBound, AnyLaw, Family, family};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     CheckedSphere, ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction,
@@ -403,16 +403,18 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
     if !(m_star > F::ZERO && m_star.is_finite()) {
         return SS_ERR_NOT_POSITIVE;
     }
-    let duration = if hertz_family(p.model) {
-        let largest = HertzImpact {
-            speed: p.largest_impact_speed,
-            effective_radius: p.largest_effective_radius,
-        };
-        Hertz::new(p.effective_modulus, p.restitution, largest)
-            .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star))
-    } else {
-        LinearSpringDashpot::new(p.normal_stiffness, p.restitution)
-            .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star))
+    let duration = match family(p.model) {
+        Some(Family::Hertz) => {
+            let largest = HertzImpact {
+                speed: p.largest_impact_speed,
+                effective_radius: p.largest_effective_radius,
+            };
+            Hertz::new(p.effective_modulus, p.restitution, largest)
+                .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star))
+        }
+        Some(Family::Linear) => LinearSpringDashpot::new(p.normal_stiffness, p.restitution)
+            .map(|normal| ContactLaw::new(normal, Frictionless).contact_duration(m_star)),
+        None => return SS_ERR_UNKNOWN_MODEL,
     };
     match duration {
         Ok(duration) => {

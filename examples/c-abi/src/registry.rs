@@ -1,7 +1,7 @@
 //! The laws the C ABI offers, listed once in [`with_laws!`]: the handles' enums ([`AnyLaw`],
 //! [`AnyBound`], the tables' [`PlainTable`] and [`RolledTable`]), every dispatch over them
 //! (`each_law!`, `each_table_of!`), the constructors from `ss_params` and from a
-//! table's configuration, the Hertz family's codes and the names a host shows
+//! table's configuration, each code's family and the names a host shows
 //! (`ss_model_name`, `ss_model_of_name`, which the LAMMPS plugin reads) all follow from it.
 //! So do the `SS_MODEL_*` codes (the header test writes them into the header from the list):
 //! adding a law is one entry here. Micro-slip is the one law outside it: its state does not fit
@@ -124,13 +124,13 @@ macro_rules! rolled_properties_of {
     };
 }
 
-/// Whether the family is Hertz's.
-macro_rules! is_hertz {
+/// The family's [`Family`].
+macro_rules! family_of {
     (linear) => {
-        false
+        Family::Linear
     };
     (hertz) => {
-        true
+        Family::Hertz
     };
 }
 
@@ -269,12 +269,13 @@ macro_rules! registry {
             }
         }
 
-        /// Whether `model` is a law of Hertz's family (its parameters are moduli and a declared
-        /// impact).
-        pub(crate) fn hertz_family(model: i32) -> bool {
+        /// The family of the law `model` names, micro-slip (a Hertz law the tables hold)
+        /// included; `None` for a code no law has.
+        pub(crate) fn family(model: i32) -> Option<Family> {
             match model {
-                $( $code => is_hertz!($family), )*
-                _ => false,
+                $( $code => Some(family_of!($family)), )*
+                SS_MODEL_HERTZ_MICROSLIP => Some(Family::Hertz),
+                _ => None,
             }
         }
 
@@ -285,10 +286,18 @@ macro_rules! registry {
 
 with_laws!(registry!$);
 
-/// Whether `model` is of Hertz's family, the listed laws and micro-slip alike (its parameters
-/// are moduli and a declared impact).
+/// Which normal law a model has, so which fields of `ss_params` describe it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Family {
+    /// The linear spring-dashpot: `normal_stiffness`, `restitution`.
+    Linear,
+    /// Hertz: `effective_modulus`, `restitution` and the declared impact.
+    Hertz,
+}
+
+/// Whether `model` is a law of Hertz's family, micro-slip included.
 pub(crate) fn hertz_model(model: i32) -> bool {
-    model == SS_MODEL_HERTZ_MICROSLIP || hertz_family(model)
+    family(model) == Some(Family::Hertz)
 }
 
 /// The linear normal law of `p`.

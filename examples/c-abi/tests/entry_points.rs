@@ -538,3 +538,53 @@ fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
         assert_eq!(unsafe { ss_rejected_parameter_f64(&q) }, parameter);
     }
 }
+
+/// The contact duration reads the normal law of the model's family: Hertz's for micro-slip
+/// (a Hertz law, though only tables hold it) and Hertz's closed form `t_c` (Johnson; `e` = 1)
+/// for its parameters, the spring's `pi sqrt(m*/k_n)` for a linear law, and
+/// `SS_ERR_UNKNOWN_MODEL` with the output untouched for a code no law has.
+#[test]
+fn contact_duration_follows_the_models_family_and_refuses_unknown_codes() {
+    let (e_star, r_star, m_star) = (1.0e9, 1.0e-3, 1.0e-5);
+    let hertz = |model| ss_params {
+        model,
+        restitution: 1.0,
+        effective_modulus: e_star,
+        effective_shear_modulus: 0.4 * e_star,
+        largest_impact_speed: 1.0,
+        largest_effective_radius: r_star,
+        ..Default::default()
+    };
+    let duration = |p: &ss_params<f64>| {
+        let mut out = -1.0;
+        // SAFETY: valid pointers.
+        let code = unsafe { ss_contact_duration_f64(p, m_star, &mut out) };
+        (code, out)
+    };
+    // Hertz's elastic contact time at impact speed v: 2.868 (m*^2 / (R* E*^2 v))^(1/5)
+    // (Johnson, Contact Mechanics, section 11.4). The law's design impact is its declared one.
+    let closed_form = 2.868 * (m_star * m_star / (r_star * e_star * e_star * 1.0)).powf(0.2);
+    for model in [SS_MODEL_HERTZ_AA, SS_MODEL_HERTZ_MICROSLIP] {
+        let (code, t_c) = duration(&hertz(model));
+        assert_eq!(code, SS_OK, "model {model}");
+        assert!(
+            (t_c / closed_form - 1.0).abs() < 2e-3,
+            "model {model}: {t_c} vs Hertz's {closed_form}"
+        );
+    }
+    let linear = ss_params {
+        restitution: 1.0,
+        ..params(SS_MODEL_AA)
+    };
+    let (code, t_c) = duration(&linear);
+    assert_eq!(code, SS_OK);
+    let spring = std::f64::consts::PI * (m_star / linear.normal_stiffness).sqrt();
+    assert!((t_c / spring - 1.0).abs() < 1e-12, "{t_c} vs {spring}");
+    for unknown in [-1, 9, 99] {
+        assert_eq!(
+            duration(&hertz(unknown)),
+            (SS_ERR_UNKNOWN_MODEL, -1.0),
+            "code {unknown}"
+        );
+    }
+}
