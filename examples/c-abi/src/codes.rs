@@ -37,11 +37,7 @@ pub const SS_ERR_POISSON_RATIO: i32 = 14;
 /// mass, a Hertz overlap past the declared impact's): explicit integration would be unstable.
 pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 
-// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_AA_LUDING: registry.rs's list.
-/// Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
-/// tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
-/// not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).
-pub const SS_MODEL_HERTZ_MICROSLIP: i32 = 8;
+// The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_MICROSLIP: registry.rs's list.
 /// Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.
 pub const SS_MICROSLIP_SPRINGS: usize = 16;
 

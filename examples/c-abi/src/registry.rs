@@ -4,8 +4,9 @@
 //! table's configuration, each code's family and the names a host shows
 //! (`ss_model_name`, `ss_model_of_name`, which the LAMMPS plugin reads) all follow from it.
 //! So do the `SS_MODEL_*` codes (the header test writes them into the header from the list):
-//! adding a law is one entry here. Micro-slip is the one law outside it: its state does not fit
-//! `ss_state`, so only the tables take it (`table.rs`).
+//! adding a law is one entry here. The list has two parts: the laws a handle (`ss_law_new_*`) and
+//! a table both take, and those only a table takes (micro-slip, whose state does not fit
+//! `ss_state`).
 
 use soft_sphere::{
     BoundLaw, ContactLaw, Float, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
@@ -13,35 +14,47 @@ use soft_sphere::{
     ModelAALuding, ParameterError, Stateless, TangentialParameters, TimeStep,
 };
 
-use crate::table::{Rolled, Tabled, elastic, elastic_frictionless, linear, linear_frictionless};
-use crate::table::{rolled_elastic, rolled_linear};
-use crate::{SS_MODEL_HERTZ_MICROSLIP, ss_params};
+use crate::ss_params;
+use crate::table::{MicroSlipMixing, Rolled, Tabled, elastic, elastic_frictionless, linear};
+use crate::table::{linear_frictionless, rolled_elastic, rolled_linear};
 
-/// Calls `$callback!` with every law, one entry each: its code's documentation, then
-/// `Variant = SS_MODEL_CODE = value, "name", family, TangentialSlot, tangential;` where the
-/// family is `linear` (the linear spring-dashpot, `TangentialParameters`) or `hertz` (Hertz,
-/// `MindlinParameters`), and `tangential` makes the slot from the family's parameters (a tuple
-/// struct's name) or is `frictionless` (no tangential parameters are read). The header test
-/// reads these lines to write the `SS_MODEL_*` constants into the C header.
+/// Calls `$callback!` with every law, in two bracketed parts: the laws handles and tables both
+/// take, then those only tables take. One entry each: its code's documentation, then
+/// `Variant = SS_MODEL_CODE = value, "name", family, TangentialSlot, tangential;` (a
+/// tables-only law has no name, since no host offers it by name, and names its table's mixing
+/// rule instead of its slot, since no handle holds its law). The family is `linear` (the linear
+/// spring-dashpot, `TangentialParameters`) or `hertz` (Hertz, `MindlinParameters`), and
+/// `tangential` makes the slot from the family's parameters (a tuple struct's name), is
+/// `frictionless` (no tangential parameters are read) or `micro_slip` (Mindlin's parameters
+/// spread over the table's declared contact radius). The header test reads these lines to
+/// write the `SS_MODEL_*` constants into the C header.
 macro_rules! with_laws {
     ($callback:ident ! $($d:tt)?) => {
         $callback! { $($d)?
-            /// The stateless (simplified) law: no tangential history is read or written.
-            Stateless = SS_MODEL_STATELESS = 0, "stateless", linear, Stateless<F>, Stateless;
-            /// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
-            ModelAA = SS_MODEL_AA = 1, "aa", linear, ModelAA<F>, ModelAA;
-            /// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
-            ModelAALuding = SS_MODEL_AA_LUDING = 2, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
-            /// No friction: normal force only (no tangential force, no torque, no state).
-            Frictionless = SS_MODEL_FRICTIONLESS = 3, "frictionless", linear, Frictionless, frictionless;
-            /// Hertz, no friction.
-            HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS = 4, "hertz/frictionless", hertz, Frictionless, frictionless;
-            /// Hertz with the stateless Mindlin law.
-            HertzStateless = SS_MODEL_HERTZ_STATELESS = 5, "hertz/stateless", hertz, MindlinStateless<F>, MindlinStateless;
-            /// Hertz with Mindlin's stored spring and Model AA's cap.
-            HertzAA = SS_MODEL_HERTZ_AA = 6, "hertz/aa", hertz, MindlinAA<F>, MindlinAA;
-            /// Hertz with Mindlin's stored spring and Luding's reset.
-            HertzAALuding = SS_MODEL_HERTZ_AA_LUDING = 7, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
+            [
+                /// The stateless (simplified) law: no tangential history is read or written.
+                Stateless = SS_MODEL_STATELESS = 0, "stateless", linear, Stateless<F>, Stateless;
+                /// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
+                ModelAA = SS_MODEL_AA = 1, "aa", linear, ModelAA<F>, ModelAA;
+                /// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
+                ModelAALuding = SS_MODEL_AA_LUDING = 2, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
+                /// No friction: normal force only (no tangential force, no torque, no state).
+                Frictionless = SS_MODEL_FRICTIONLESS = 3, "frictionless", linear, Frictionless, frictionless;
+                /// Hertz, no friction.
+                HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS = 4, "hertz/frictionless", hertz, Frictionless, frictionless;
+                /// Hertz with the stateless Mindlin law.
+                HertzStateless = SS_MODEL_HERTZ_STATELESS = 5, "hertz/stateless", hertz, MindlinStateless<F>, MindlinStateless;
+                /// Hertz with Mindlin's stored spring and Model AA's cap.
+                HertzAA = SS_MODEL_HERTZ_AA = 6, "hertz/aa", hertz, MindlinAA<F>, MindlinAA;
+                /// Hertz with Mindlin's stored spring and Luding's reset.
+                HertzAALuding = SS_MODEL_HERTZ_AA_LUDING = 7, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
+            ]
+            [
+                /// Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
+                /// tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
+                /// not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).
+                HertzMicroSlip = SS_MODEL_HERTZ_MICROSLIP = 8, hertz, MicroSlipMixing<F>, micro_slip;
+            ]
         }
     };
 }
@@ -82,18 +95,24 @@ macro_rules! law_of {
     };
 }
 
-/// The mixing rule of a family and tangential constructor.
+/// The mixing rule of a family and tangential constructor (`$span`: micro-slip's contact radius).
 macro_rules! mixing_of {
-    ($impact:expr, linear, frictionless) => {
+    ($impact:expr, $span:expr, hertz, micro_slip) => {
+        MicroSlipMixing {
+            largest: $impact,
+            span: $span,
+        }
+    };
+    ($impact:expr, $span:expr, linear, frictionless) => {
         LinearMixing::new(|_| Frictionless)
     };
-    ($impact:expr, linear, $make:ident) => {
+    ($impact:expr, $span:expr, linear, $make:ident) => {
         LinearMixing::new($make)
     };
-    ($impact:expr, hertz, frictionless) => {
+    ($impact:expr, $span:expr, hertz, frictionless) => {
         HertzMixing::new($impact, |_| Frictionless)
     };
-    ($impact:expr, hertz, $make:ident) => {
+    ($impact:expr, $span:expr, hertz, $make:ident) => {
         HertzMixing::new($impact, $make)
     };
 }
@@ -146,13 +165,20 @@ macro_rules! rolls {
 
 /// The codes, enums, constructors and names, from the list.
 macro_rules! registry {
-    ($d:tt $(
+    ($d:tt [$(
         $(#[$doc:meta])*
         $variant:ident = $code:ident = $value:literal, $name:literal, $family:ident, $t:ty, $make:ident;
-    )*) => {
+    )*] [$(
+        $(#[$tdoc:meta])*
+        $tvariant:ident = $tcode:ident = $tvalue:literal, $tfamily:ident, $tt:ty, $tmake:ident;
+    )*]) => {
         $(
             $(#[$doc])*
             pub const $code: i32 = $value;
+        )*
+        $(
+            $(#[$tdoc])*
+            pub const $tcode: i32 = $tvalue;
         )*
 
         /// Which law a handle holds.
@@ -180,6 +206,10 @@ macro_rules! registry {
                 #[doc = $name]
                 $variant(Box<Tabled<F, family::$family::Mixing<F, $t>>>),
             )*
+            $(
+                #[doc = stringify!($tvariant)]
+                $tvariant(Box<Tabled<F, $tt>>),
+            )*
         }
 
         /// A material table of each law with the elastic-plastic rolling resistance.
@@ -188,6 +218,10 @@ macro_rules! registry {
             $(
                 #[doc = $name]
                 $variant(Box<Tabled<F, Rolled<family::$family::Mixing<F, $t>, F>>>),
+            )*
+            $(
+                #[doc = stringify!($tvariant)]
+                $tvariant(Box<Tabled<F, Rolled<$tt, F>>>),
             )*
         }
 
@@ -206,13 +240,14 @@ macro_rules! registry {
             ($d any:expr, $d kind:ident, $d table:pat => $d body:expr) => {
                 match $d any {
                     $( $d kind::$variant($d table) => $d body, )*
+                    $( $d kind::$tvariant($d table) => $d body, )*
                 }
             };
         }
 
         impl<F: Float> AnyLaw<F> {
             /// The law `p` describes, before its time step is checked; `None` for a code the
-            /// list does not hold.
+            /// list does not hold for handles.
             pub(crate) fn new(p: &ss_params<F>) -> Option<Result<Self, ParameterError>> {
                 Some(match p.model {
                     $( $code => law_of!(p, $family, $make).map(Self::$variant), )*
@@ -234,13 +269,23 @@ macro_rules! registry {
         }
 
         impl<F: Float> PlainTable<F> {
-            /// A table of `materials` materials of the law `model` names; `None` for a code
-            /// the list does not hold.
-            pub(crate) fn new(model: i32, impact: HertzImpact<F>, materials: usize) -> Option<Self> {
+            /// A table of `materials` materials of the law `model` names (`span`: micro-slip's
+            /// contact radius); `None` for a code the list does not hold.
+            pub(crate) fn new(
+                model: i32,
+                impact: HertzImpact<F>,
+                span: F,
+                materials: usize,
+            ) -> Option<Self> {
                 Some(match model {
                     $( $code => Self::$variant(Tabled::new(
-                        mixing_of!(impact, $family, $make),
+                        mixing_of!(impact, span, $family, $make),
                         properties_of!($family, $make),
+                        materials,
+                    )), )*
+                    $( $tcode => Self::$tvariant(Tabled::new(
+                        mixing_of!(impact, span, $tfamily, $tmake),
+                        properties_of!($tfamily, $tmake),
                         materials,
                     )), )*
                     _ => return None,
@@ -254,14 +299,19 @@ macro_rules! registry {
             /// against).
             pub(crate) fn new(
                 model: i32,
-                impact: HertzImpact<F>,
+                (impact, span): (HertzImpact<F>, F),
                 materials: usize,
                 smallest_inertia: F,
             ) -> Option<Self> {
                 Some(match model {
                     $( $code if rolls!($make) => Self::$variant(Tabled::new(
-                        Rolled { mixing: mixing_of!(impact, $family, $make), smallest_inertia },
+                        Rolled { mixing: mixing_of!(impact, span, $family, $make), smallest_inertia },
                         rolled_properties_of!($family),
+                        materials,
+                    )), )*
+                    $( $tcode if rolls!($tmake) => Self::$tvariant(Tabled::new(
+                        Rolled { mixing: mixing_of!(impact, span, $tfamily, $tmake), smallest_inertia },
+                        rolled_properties_of!($tfamily),
                         materials,
                     )), )*
                     _ => return None,
@@ -269,17 +319,16 @@ macro_rules! registry {
             }
         }
 
-        /// The family of the law `model` names, micro-slip (a Hertz law the tables hold)
-        /// included; `None` for a code no law has.
+        /// The family of the law `model` names; `None` for a code no law has.
         pub(crate) fn family(model: i32) -> Option<Family> {
             match model {
                 $( $code => Some(family_of!($family)), )*
-                SS_MODEL_HERTZ_MICROSLIP => Some(Family::Hertz),
+                $( $tcode => Some(family_of!($tfamily)), )*
                 _ => None,
             }
         }
 
-        /// Every law's code and name, in the list's order.
+        /// Every named law's code and name, in the list's order.
         pub(crate) const NAMES: &[(i32, &str)] = &[ $( ($code, concat!($name, "\0")), )* ];
     };
 }

@@ -365,8 +365,10 @@ pub(crate) fn rolled_elastic<F: Float>(
 /// parameters, the springs spanning one contact radius for every pair.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct MicroSlipMixing<F: Float> {
-    largest: HertzImpact<F>,
-    span: F,
+    /// The declared impact of the Hertz law.
+    pub(crate) largest: HertzImpact<F>,
+    /// The contact radius the springs span (m).
+    pub(crate) span: F,
 }
 
 impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
@@ -380,14 +382,11 @@ impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
     }
 }
 
-/// A table of the registry's laws (`registry.rs`), with or without rolling resistance, or of
-/// micro-slip.
+/// A table of the registry's laws (`registry.rs`), with or without rolling resistance.
 #[derive(Debug)]
 pub(crate) enum AnyTable<F: Float> {
     Plain(PlainTable<F>),
     Rolled(RolledTable<F>),
-    MicroSlip(Box<Tabled<F, MicroSlipMixing<F>>>),
-    RolledMicroSlip(Box<Tabled<F, Rolled<MicroSlipMixing<F>, F>>>),
 }
 
 /// `$body` with `$t` bound to the table inside an [`AnyTable`].
@@ -396,8 +395,6 @@ macro_rules! each_table {
         match $any {
             AnyTable::Plain(plain) => each_table_of!(plain, PlainTable, $t => $body),
             AnyTable::Rolled(rolled) => each_table_of!(rolled, RolledTable, $t => $body),
-            AnyTable::MicroSlip($t) => $body,
-            AnyTable::RolledMicroSlip($t) => $body,
         }
     };
 }
@@ -596,50 +593,31 @@ pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTabl
             .law(&probe, &probe)
             .map_err(parameter_code)?;
     }
-    let micro_slip = MicroSlipMixing {
-        largest: impact,
-        span: config.largest_contact_radius,
-    };
+    let span = config.largest_contact_radius;
     if config.model == SS_MODEL_HERTZ_MICROSLIP {
+        // Micro-slip's springs span the declared contact radius: checked here, once.
         let probe = MindlinParameters::new(F::ONE, F::ZERO, F::ZERO).map_err(parameter_code)?;
-        MicroSlip::<F, SS_MICROSLIP_SPRINGS>::new(probe, micro_slip.span)
-            .map_err(parameter_code)?;
+        MicroSlip::<F, SS_MICROSLIP_SPRINGS>::new(probe, span).map_err(parameter_code)?;
     }
     match config.rolling {
-        SS_ROLLING_NONE => {}
-        SS_ROLLING_EPSD => return rolled_table(config, impact, micro_slip),
-        _ => return Err(SS_ERR_UNKNOWN_MODEL),
+        SS_ROLLING_NONE => PlainTable::new(config.model, impact, span, m)
+            .map(AnyTable::Plain)
+            .ok_or(SS_ERR_UNKNOWN_MODEL),
+        SS_ROLLING_EPSD => rolled_table(config, (impact, span)),
+        _ => Err(SS_ERR_UNKNOWN_MODEL),
     }
-    if config.model == SS_MODEL_HERTZ_MICROSLIP {
-        return Ok(AnyTable::MicroSlip(Tabled::new(micro_slip, elastic, m)));
-    }
-    PlainTable::new(config.model, impact, m)
-        .map(AnyTable::Plain)
-        .ok_or(SS_ERR_UNKNOWN_MODEL)
 }
 
 /// A table of laws with the elastic-plastic rolling resistance (the smallest inertia checked
 /// here).
 pub(crate) fn rolled_table<F: Float>(
     config: &ss_table_config<F>,
-    impact: HertzImpact<F>,
-    micro_slip: MicroSlipMixing<F>,
+    (impact, span): (HertzImpact<F>, F),
 ) -> Result<AnyTable<F>, i32> {
     let (m, smallest_inertia) = (config.materials, config.smallest_inertia);
     ElasticPlasticRolling::new(F::ZERO, F::ONE, F::ZERO, smallest_inertia)
         .map_err(parameter_code)?;
-    if config.model == SS_MODEL_HERTZ_MICROSLIP {
-        let rolled = Rolled {
-            mixing: micro_slip,
-            smallest_inertia,
-        };
-        return Ok(AnyTable::RolledMicroSlip(Tabled::new(
-            rolled,
-            rolled_elastic,
-            m,
-        )));
-    }
-    RolledTable::new(config.model, impact, m, smallest_inertia)
+    RolledTable::new(config.model, (impact, span), m, smallest_inertia)
         .map(AnyTable::Rolled)
         .ok_or(SS_ERR_UNKNOWN_MODEL)
 }
