@@ -807,7 +807,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             self.sorted[place[a][b]] = k;
             place[a][b] += 1;
         }
-        let mut run = Run {
+        let mut pairs = ChunkPairs {
             spheres,
             chunk,
             shifts,
@@ -821,17 +821,17 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             for (b, &count) in row.iter().enumerate() {
                 let places = &self.sorted[starts[a][b]..starts[a][b] + count];
                 let places = places.iter().map(|&k| usize::from(k));
-                self.group.evaluate(&mut bound[a][b], places, &mut run);
+                self.group.evaluate(&mut bound[a][b], places, &mut pairs);
             }
         }
-        run.failed
+        pairs.failed
     }
 }
 
 /// One chunk's pairs as the batch path reads and writes them: the spheres from the arrays (j
 /// shifted to its image), the states from the chunk's copy, the forces and whether each touches
 /// kept by place, the first refused pair in list order.
-struct Run<'a, F: Float, S, P> {
+struct ChunkPairs<'a, F: Float, S, P> {
     spheres: &'a P,
     chunk: &'a [[u32; 2]],
     shifts: &'a [Vec3<F>],
@@ -842,7 +842,7 @@ struct Run<'a, F: Float, S, P> {
     failed: Option<(usize, ContactError)>,
 }
 
-impl<L: Law, P: Spheres<L::Float>> BlockPairs<L> for Run<'_, L::Float, L::State, P> {
+impl<L: Law, P: Spheres<L::Float>> BlockPairs<L> for ChunkPairs<'_, L::Float, L::State, P> {
     #[inline(always)]
     fn gather(&self, k: usize) -> (Sphere<L::Float>, Sphere<L::Float>, L::State) {
         let [i, j] = self.chunk[k].map(|x| x as usize);
