@@ -30,10 +30,11 @@ pub enum Route {
     /// at a time for every law, which measured fastest (`list_bench`, `contact_batch_bench`).
     #[default]
     Auto,
-    /// Sorted by pair of materials into blocks of [`LANES`](crate::batch::LANES) through the batch path. The blocks
-    /// are evaluated in vector registers (with the `Std` backend in an AVX build), but gathering
-    /// them from the arrays, sorting and scattering cost more than that saves: 1.3 times slower
-    /// than one at a time in `list_bench` (`x86-64-v3`, 10,000 spheres).
+    /// Sorted by pair of materials into blocks of [`LANES`](crate::batch::LANES) through the
+    /// batch path ([`BlockGroup`]). The blocks are evaluated in vector registers (with the `Std`
+    /// backend in an AVX build), but gathering them from the arrays, sorting and scattering cost
+    /// more than that saves: 1.3 times slower than one at a time in `list_bench` (`x86-64-v3`,
+    /// 10,000 spheres).
     Blocks,
     /// One sifted pair at a time through the one-contact path.
     OneAtATime,

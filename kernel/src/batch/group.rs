@@ -116,8 +116,8 @@ impl<F: Float, S: ContactState> BlockGroup<F, S> {
         let mut places = places.into_iter();
         loop {
             let gathered = self.gather(&mut places, pairs);
-            for (b, lanes) in (0..gathered).step_by(LANES).enumerate() {
-                let lanes = LANES.min(gathered - lanes);
+            for (b, start) in (0..gathered).step_by(LANES).enumerate() {
+                let lanes = LANES.min(gathered - start);
                 evaluate_block(law, &self.blocks[b], &mut self.states[b], &mut self.out[b]);
                 for lane in 0..lanes {
                     let outcome = self.out[b].outcome(lane);
