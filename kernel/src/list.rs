@@ -511,15 +511,26 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         let laws = self.rows();
         let mut bound: [[BoundLaw<L>; MATERIALS]; MATERIALS] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
-        let outcome = evaluate_pairs(
-            spheres,
-            (pairs, shifts),
-            (&mut *list.pair_states, &mut *saved_pairs),
-            &mut bound,
-            &mut sink,
-            blocks,
-        )
-        .and_then(|()| {
+        let states = (&mut *list.pair_states, &mut *saved_pairs);
+        // Each route compiled on its own, so that neither's code shapes the other's loop.
+        let outcome = if blocks {
+            evaluate_pairs::<L, MATERIALS, true>(
+                spheres,
+                (pairs, shifts),
+                states,
+                &mut bound,
+                &mut sink,
+            )
+        } else {
+            evaluate_pairs::<L, MATERIALS, false>(
+                spheres,
+                (pairs, shifts),
+                states,
+                &mut bound,
+                &mut sink,
+            )
+        };
+        let outcome = outcome.and_then(|()| {
             let walls = (walls, &mut *list.wall_states);
             evaluate_walls(spheres, walls, &mut bound, &mut sink, pairs.len())
                 .map_err(|error| (error, pairs.len()))
@@ -604,13 +615,12 @@ const SIFT: usize = 256;
 /// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
 /// committed in list order. Stops at the first chunk with a refused pair, naming the first in
 /// list order, with how many pairs' states it had copied (and may have changed).
-fn evaluate_pairs<L: Law, const MATERIALS: usize>(
+fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
     (states, saved): (&mut [L::State], &mut [L::State]),
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut Sink<'_, L::Float>,
-    blocks: bool,
 ) -> Result<(), (ListError, usize)> {
     let mut staged = Staged::<L::Float, L::State>::new();
     let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
@@ -630,7 +640,7 @@ fn evaluate_pairs<L: Law, const MATERIALS: usize>(
                 sink.record(first + k, Interaction::Apart);
             }
         }
-        let failed = if blocks {
+        let failed = if BLOCKS {
             let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
             if failed.is_none() {
                 for &k in &staged.touching[..found] {
