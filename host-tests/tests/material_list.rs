@@ -1090,3 +1090,129 @@ fn every_list_and_table_error_says_where_and_why() {
     let none = Mixture::new(0, 1);
     assert_eq!((none.arrays().len(), none.arrays().is_empty()), (0, true));
 }
+
+/// The first pair the one-contact path refuses, in list order, with its error.
+fn first_refused_one_at_a_time(
+    t: &MaterialTable<Linear, 3>,
+    m: &Mixture,
+    pairs: &[[u32; 2]],
+    dt: soft_sphere::TimeStep<f64>,
+) -> Option<ListError> {
+    pairs.iter().enumerate().find_map(|(pair, &[i, j])| {
+        let (i, j) = (i as usize, j as usize);
+        let law = t
+            .law(m.material[i] as usize, m.material[j] as usize)
+            .unwrap();
+        let mut state = State::default();
+        let outcome = law.sphere_sphere(&m.sphere(i), &m.sphere(j), &mut state, dt);
+        outcome.err().map(|error| ListError::Pair { pair, error })
+    })
+}
+
+/// The seam tests a chunk's results for finiteness once (a sum) and re-runs a failing chunk
+/// checked: whichever failure it meets first, it names the one the one-contact path meets first
+/// in list order; a chunk whose results are finite but whose sum overflows stands, with the
+/// one-contact path's bits.
+#[test]
+fn a_chunk_tested_at_once_names_the_first_refused_pair_in_list_order() {
+    let t = table();
+    let base = Mixture::new(60, 5);
+    assert!(base.pairs.len() > 300, "{}", base.pairs.len());
+    let dt = t.time_step(1.0e-6, &base.arrays(), &[]).unwrap();
+    let touching = |k: usize| {
+        let [i, j] = base.pairs[k].map(|x| x as usize);
+        let reach = base.radius[i] + base.radius[j];
+        (base.position[j] - base.position[i]).norm_squared() < reach * reach
+    };
+    // Two touching pairs of the first chunk (256 pairs) with no sphere in common, a third in
+    // the second chunk.
+    let early = (10..256).find(|&k| touching(k)).unwrap();
+    let shares = |a: usize, b: usize| {
+        let (x, y) = (base.pairs[a], base.pairs[b]);
+        x.iter().any(|s| y.contains(s))
+    };
+    let late = (early + 20..256)
+        .find(|&k| touching(k) && !shares(early, k))
+        .unwrap();
+    let next_chunk = (256..base.pairs.len()).find(|&k| touching(k)).unwrap();
+    // Pair k's contact overflows: its spheres meet at +-1.7e308 m/s.
+    let overflowing = |m: &mut Mixture, k: usize| {
+        let [i, j] = base.pairs[k].map(|x| x as usize);
+        m.velocity[i].x = 1.7e308;
+        m.velocity[j].x = -1.7e308;
+    };
+    let coincident = |pairs: &mut Vec<[u32; 2]>, k: usize| pairs[k] = [pairs[k][0]; 2];
+    let refused = |m: &Mixture, pairs: &[[u32; 2]]| {
+        let list = try_evaluate(&t, &m.arrays(), pairs, &[], dt);
+        assert_eq!(list.err(), first_refused_one_at_a_time(&t, m, pairs, dt));
+        list.err()
+    };
+    let pair = |pair: usize, error: ContactError| Some(ListError::Pair { pair, error });
+
+    // A non-finite result before a coincident pair in the same chunk: the non-finite one.
+    let mut m = Mixture::new(60, 5);
+    overflowing(&mut m, early);
+    let mut pairs = base.pairs.clone();
+    coincident(&mut pairs, late);
+    assert_eq!(
+        refused(&m, &pairs),
+        pair(early, ContactError::NonFiniteResult)
+    );
+    // The other way round: the coincident pair.
+    let mut m = Mixture::new(60, 5);
+    overflowing(&mut m, late);
+    let mut pairs = base.pairs.clone();
+    coincident(&mut pairs, early);
+    assert_eq!(
+        refused(&m, &pairs),
+        pair(early, ContactError::CoincidentCentres)
+    );
+    // A non-finite result alone, found by the chunk's test, in the second chunk.
+    let mut m = Mixture::new(60, 5);
+    overflowing(&mut m, next_chunk);
+    assert_eq!(
+        refused(&m, &base.pairs),
+        pair(next_chunk, ContactError::NonFiniteResult)
+    );
+
+    // Finite results whose sum overflows: one sphere sliding past all its neighbours at
+    // 1e308 m/s. Accepted, with the one-contact path's bits.
+    let mut m = Mixture::new(60, 5);
+    let [fast, _] = base.pairs[early].map(|x| x as usize);
+    m.velocity[fast] = Vec3::new(1.0e308, 1.0e308, 0.0);
+    let neighbours = (0..256)
+        .filter(|&k| touching(k) && base.pairs[k].contains(&(fast as u32)))
+        .count();
+    assert!(neighbours >= 2, "{neighbours}");
+    assert_eq!(first_refused_one_at_a_time(&t, &m, &base.pairs, dt), None);
+    let n = m.position.len();
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut states = vec![State::default(); base.pairs.len()];
+    let mut saved = (
+        vec![State::default(); base.pairs.len()],
+        vec![Vec3::ZERO; 2 * n],
+    );
+    let list = ContactList {
+        pairs: &base.pairs,
+        shifts: &[],
+        pair_states: &mut states,
+        walls: &[],
+        wall_states: &mut [],
+    };
+    let out = ListOutput {
+        force: &mut force,
+        torque: &mut torque,
+        backup: Backup {
+            states: &mut saved.0,
+            loads: &mut saved.1,
+        },
+        records: None,
+    };
+    t.evaluate(dt, &m.arrays(), list, out).unwrap();
+    let mut peer_states = vec![State::default(); base.pairs.len()];
+    let peer = one_at_a_time(&t, &m, &[], dt, (&mut peer_states, &mut [])).unwrap();
+    assert_eq!(
+        bits(&(&force, &torque, &states)),
+        bits(&(&peer.0, &peer.1, &peer_states))
+    );
+}

@@ -18,7 +18,7 @@ use crate::engine::{BoundLaw, Law};
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::geometry::Separation;
-use crate::law::{ContactForces, ContactLaw, Interaction};
+use crate::law::{ContactForces, ContactLaw, Interaction, within_stable_step};
 use crate::normal::{NormalModel, NormalOscillator};
 use crate::rolling::RollingModel;
 use crate::rotation::Rotation;
@@ -394,7 +394,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const WIDTH: usize>(
             law.normal()
                 .contact::<M>(frame.overlap, F::ZERO, frame.effective_radius, &unit);
         let stiffness = law.normal().tangent_stiffness(&contact);
-        if law.within_stable_step(stiffness, effective_mass(i.mass, j.mass), time_step) {
+        if within_stable_step(stiffness, effective_mass(i.mass, j.mass), bound.allowed) {
             continue;
         }
         if tolerate {

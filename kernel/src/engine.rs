@@ -14,6 +14,12 @@ use crate::time_step::TimeStep;
 pub(crate) mod sealed {
     /// Only the kernel's [`ContactLaw`](crate::ContactLaw) is a [`Law`](super::Law).
     pub trait Sealed {}
+
+    /// Only the kernel can make one: it opens the hook that leaves the finiteness test of a
+    /// contact's results to its caller, which only the list seam calls (it tests a whole chunk
+    /// at once and re-runs a failing chunk checked).
+    #[derive(Clone, Copy, Debug)]
+    pub struct Deferred(pub(crate) ());
 }
 
 /// A [`ContactLaw`](crate::ContactLaw), whatever its slots: lets an engine take the law as one
@@ -78,6 +84,12 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// See [`ContactLaw::recommended_time_step`](crate::ContactLaw::recommended_time_step).
     fn recommended_time_step(&self, effective_mass: Self::Float) -> Self::Float;
 
+    /// `(phi / dt)^2`: the squared normal frequency `w0^2` below which a contact is within
+    /// `time_step`'s stability limit, `phi` being
+    /// [`ContactLaw::stable_phase`](crate::ContactLaw::stable_phase). A [`BoundLaw`] derives it
+    /// once, so each contact's check is a product and a comparison.
+    fn stable_rate_squared(&self, time_step: TimeStep<Self::Float>) -> Self::Float;
+
     /// See [`ContactLaw::contact_duration`](crate::ContactLaw::contact_duration).
     fn contact_duration(&self, effective_mass: Self::Float) -> Self::Float;
 
@@ -106,6 +118,21 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         i: &CheckedSphere<Self::Float>,
         j: &CheckedSphere<Self::Float>,
         state: &mut Self::State,
+    ) -> Result<Interaction<Self::Float>, ContactError>;
+
+    /// [`Law::evaluate_pair`] without the finiteness test of the forces and the new state,
+    /// which the caller makes (the list seam, once per chunk); the state is written even when it
+    /// is not finite. Only the kernel can call it.
+    ///
+    /// # Errors
+    /// As [`BoundLaw::sphere_sphere`], except [`ContactError::NonFiniteResult`].
+    #[doc(hidden)]
+    fn evaluate_pair_deferred(
+        bound: &mut BoundLaw<Self>,
+        i: &CheckedSphere<Self::Float>,
+        j: &CheckedSphere<Self::Float>,
+        state: &mut Self::State,
+        deferred: sealed::Deferred,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
     /// What [`BoundLaw::sphere_pairs`] calls.
@@ -141,6 +168,8 @@ pub struct BoundLaw<L: Law> {
     // The fields are the crate's so that an evaluation can borrow the law and the memos apart.
     pub(crate) law: L,
     pub(crate) time_step: TimeStep<L::Float>,
+    /// The step's [`Law::stable_rate_squared`], derived once.
+    pub(crate) allowed: L::Float,
     pub(crate) pair: Memo<[L::Float; 2], PairOscillator<L::Float>>,
     pub(crate) wall: Memo<L::Float, NormalOscillator<L::Float>>,
     pub(crate) unstable: usize,
@@ -174,6 +203,7 @@ impl<L: Law> BoundLaw<L> {
         Self {
             law,
             time_step,
+            allowed: law.stable_rate_squared(time_step),
             pair: Memo {
                 key: [<L::Float as Float>::ZERO; 2],
                 value: (NormalOscillator::default(), <L::Float as Float>::ZERO),
@@ -226,6 +256,18 @@ impl<L: Law> BoundLaw<L> {
         state: &mut L::State,
     ) -> Result<Interaction<L::Float>, ContactError> {
         L::evaluate_pair(self, i, j, state)
+    }
+
+    /// [`BoundLaw::sphere_sphere`] whose caller tests the forces and the new state for
+    /// finiteness itself (see [`Law::evaluate_pair_deferred`]).
+    #[inline(always)]
+    pub(crate) fn sphere_sphere_deferred(
+        &mut self,
+        i: &CheckedSphere<L::Float>,
+        j: &CheckedSphere<L::Float>,
+        state: &mut L::State,
+    ) -> Result<Interaction<L::Float>, ContactError> {
+        L::evaluate_pair_deferred(self, i, j, state, sealed::Deferred(()))
     }
 
     /// Evaluates the contact between a checked sphere (body i) and a wall (body j) for one step;

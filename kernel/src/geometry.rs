@@ -149,11 +149,8 @@ pub(crate) fn sphere_wall<F: Float>(
     wall: &Wall<F>,
     lever_arm: LeverArm,
 ) -> Option<ContactFrame<F>> {
-    let distance = wall.distance_to(sphere.position);
-    let overlap = sphere.radius - distance;
-    // A NaN overlap (finite inputs whose distance overflowed) falls through and is reported as
-    // a non-finite result.
-    if overlap <= F::ZERO {
+    let (distance, overlap) = wall_overlap(sphere.position, sphere.radius, wall);
+    if !reaches(overlap) {
         return None;
     }
     let arm_i = match lever_arm {
@@ -171,4 +168,28 @@ pub(crate) fn sphere_wall<F: Float>(
         angular_velocity_i: sphere.angular_velocity,
         angular_velocity_j: Vec3::ZERO,
     })
+}
+
+/// The distance from a sphere's centre to a wall and their overlap.
+#[inline(always)]
+fn wall_overlap<F: Float>(position: Vec3<F>, radius: F, wall: &Wall<F>) -> (F, F) {
+    let distance = wall.distance_to(position);
+    (distance, radius - distance)
+}
+
+/// Whether an overlap is evaluated: positive, or NaN (finite inputs whose distance overflowed),
+/// which falls through and is reported as a non-finite result.
+#[inline(always)]
+fn reaches<F: Float>(overlap: F) -> bool {
+    !matches!(
+        overlap.partial_cmp(&F::ZERO),
+        Some(core::cmp::Ordering::Less | core::cmp::Ordering::Equal)
+    )
+}
+
+/// Whether [`sphere_wall`] evaluates a sphere at `position` of `radius` against `wall` (by the
+/// same test), so an engine can sift its spheres against a wall before evaluating them.
+#[inline(always)]
+pub(crate) fn reaches_wall<F: Float>(position: Vec3<F>, radius: F, wall: &Wall<F>) -> bool {
+    reaches(wall_overlap(position, radius, wall).1)
 }

@@ -109,6 +109,22 @@ impl<F: Float> ContactForces<F> {
         -self.force_on_j()
     }
 
+    /// The sum of every number [`ContactForces::is_finite`] tests, in pairs: finite only when
+    /// each of them is (a NaN or an infinity stays in any sum), so a chunk's contacts are tested
+    /// by summing their probes once. A finite-valued sum can still overflow; its caller then
+    /// re-runs the contacts checked.
+    #[inline(always)]
+    pub(crate) fn finite_probe(&self) -> F {
+        let (t, s, a, b) = (
+            self.tangential_force,
+            self.slip_velocity,
+            self.torque_on_i,
+            self.torque_on_j,
+        );
+        let v = (t + s) + (a + b);
+        (v.x + v.y) + (v.z + self.normal_force)
+    }
+
     #[inline(always)]
     pub(crate) fn is_finite(&self) -> bool {
         let (t, s, a, b) = (
@@ -401,7 +417,10 @@ where
             let mass = effective_mass(i.mass, j.mass);
             (self.normal.oscillator::<M>(mass), mass)
         };
-        Ok(self.interaction(frame, oscillator, state, time_step)?.0)
+        let allowed = self.stable_rate_squared(time_step);
+        Ok(self
+            .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
+            .0)
     }
 
     /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step, checking
@@ -421,7 +440,10 @@ where
         checked::check(sphere)?;
         let frame = geometry::sphere_wall(sphere, wall, self.lever_arm);
         let oscillator = || (self.normal.oscillator::<M>(sphere.mass), sphere.mass);
-        Ok(self.interaction(frame, oscillator, state, time_step)?.0)
+        let allowed = self.stable_rate_squared(time_step);
+        Ok(self
+            .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
+            .0)
     }
 
     /// The law bound to a checked time step: it evaluates [`CheckedSphere`]s with no repeated
@@ -432,14 +454,17 @@ where
     }
 
     /// The outcome for an overlap (`Some` frame) or none, and whether it was a contact past the
-    /// stable step that the step tolerates.
+    /// stable step that the step tolerates. `allowed` is the step's
+    /// [`stable_rate_squared`](Self::stable_rate_squared), derived once per step by a bound law.
+    /// With `FINITE` false the forces and the new state are not tested for finiteness: the
+    /// caller tests them ([`Law::evaluate_pair_deferred`]).
     #[inline(always)]
-    fn interaction(
+    fn interaction<const FINITE: bool>(
         &self,
         frame: Option<ContactFrame<F>>,
         oscillator: impl FnOnce() -> (NormalOscillator<F>, F),
         state: &mut Ro::State<T::State>,
-        time_step: TimeStep<F>,
+        (time_step, allowed): (TimeStep<F>, F),
     ) -> Result<(Interaction<F>, bool), ContactError> {
         match frame {
             None => {
@@ -448,45 +473,23 @@ where
             }
             Some(frame) => {
                 let (oscillator, effective_mass) = oscillator();
-                self.resolve(frame, (&oscillator, effective_mass), state, time_step)
+                let (forces, next_state, stiffness) =
+                    self.touching(&frame, &oscillator, state, time_step);
+                let unstable = !within_stable_step(stiffness, effective_mass, allowed);
+                if unstable && !time_step.tolerates_unstable_contacts() {
+                    return Err(ContactError::PastStableStep);
+                }
+                if FINITE && !(forces.is_finite() && next_state.is_finite()) {
+                    return Err(ContactError::NonFiniteResult);
+                }
+                *state = next_state;
+                Ok((Interaction::Touching(forces), unstable))
             }
         }
     }
 
-    #[inline(always)]
-    fn resolve(
-        &self,
-        frame: ContactFrame<F>,
-        (oscillator, effective_mass): (&NormalOscillator<F>, F),
-        state: &mut Ro::State<T::State>,
-        time_step: TimeStep<F>,
-    ) -> Result<(Interaction<F>, bool), ContactError> {
-        let (forces, next_state, stiffness) = self.touching(&frame, oscillator, state, time_step);
-        let unstable = !self.within_stable_step(stiffness, effective_mass, time_step);
-        if unstable && !time_step.tolerates_unstable_contacts() {
-            return Err(ContactError::PastStableStep);
-        }
-        if !(forces.is_finite() && next_state.is_finite()) {
-            return Err(ContactError::NonFiniteResult);
-        }
-        *state = next_state;
-        Ok((Interaction::Touching(forces), unstable))
-    }
-
-    /// Whether a contact of tangent stiffness `stiffness` between bodies of effective mass
-    /// `effective_mass` is within the step's stability limit: `w0 dt < phi` with
-    /// `w0^2 = stiffness / m*`, compared squared, without a root (false for a NaN).
-    #[inline(always)]
-    pub(crate) fn within_stable_step(
-        &self,
-        stiffness: F,
-        effective_mass: F,
-        time_step: TimeStep<F>,
-    ) -> bool {
-        stiffness < effective_mass * self.stable_rate_squared(time_step)
-    }
-
-    /// `(phi / dt)^2`, the squared frequency the step allows.
+    /// `(phi / dt)^2`, the squared frequency the step allows: one division per step, which a
+    /// bound law makes once ([`BoundLaw`]) rather than at every contact.
     #[inline(always)]
     pub(crate) fn stable_rate_squared(&self, time_step: TimeStep<F>) -> F {
         let rate = self.stable_phase / time_step.seconds();
@@ -590,6 +593,15 @@ where
     }
 }
 
+/// Whether a contact of tangent stiffness `stiffness` between bodies of effective mass
+/// `effective_mass` is within the step's stability limit: `w0 dt < phi` with
+/// `w0^2 = stiffness / m*`, compared squared against `allowed = (phi / dt)^2` without a root or a
+/// division (false for a NaN).
+#[inline(always)]
+pub(crate) fn within_stable_step<F: Float>(stiffness: F, effective_mass: F, allowed: F) -> bool {
+    stiffness < effective_mass * allowed
+}
+
 impl<F: Float, N, T, M, R, Ro> sealed::Sealed for ContactLaw<F, N, T, M, R, Ro> {}
 
 impl<F, N, T, M, R, Ro> Law for ContactLaw<F, N, T, M, R, Ro>
@@ -622,6 +634,10 @@ where
         ContactLaw::recommended_time_step(self, effective_mass)
     }
 
+    fn stable_rate_squared(&self, time_step: TimeStep<F>) -> F {
+        ContactLaw::stable_rate_squared(self, time_step)
+    }
+
     fn contact_duration(&self, effective_mass: F) -> F {
         ContactLaw::contact_duration(self, effective_mass)
     }
@@ -637,23 +653,18 @@ where
         j: &CheckedSphere<F>,
         state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
-        let BoundLaw {
-            law,
-            time_step,
-            pair,
-            unstable: count,
-            ..
-        } = bound;
-        let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
-        let oscillator = || {
-            *pair.get([i.mass, j.mass], |masses| {
-                let mass = effective_mass(masses[0], masses[1]);
-                (law.normal.oscillator::<M>(mass), mass)
-            })
-        };
-        let (interaction, unstable) = law.interaction(frame, oscillator, state, *time_step)?;
-        *count += usize::from(unstable);
-        Ok(interaction)
+        bound_pair::<_, _, _, _, _, _, true>(bound, i, j, state)
+    }
+
+    #[inline(always)]
+    fn evaluate_pair_deferred(
+        bound: &mut BoundLaw<Self>,
+        i: &CheckedSphere<F>,
+        j: &CheckedSphere<F>,
+        state: &mut Ro::State<T::State>,
+        _: sealed::Deferred,
+    ) -> Result<Interaction<F>, ContactError> {
+        bound_pair::<_, _, _, _, _, _, false>(bound, i, j, state)
     }
 
     #[inline(always)]
@@ -676,6 +687,7 @@ where
         let BoundLaw {
             law,
             time_step,
+            allowed,
             wall: memo,
             unstable: count,
             ..
@@ -685,8 +697,46 @@ where
             let oscillator = *memo.get(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
             (oscillator, sphere.mass)
         };
-        let (interaction, unstable) = law.interaction(frame, oscillator, state, *time_step)?;
+        let (interaction, unstable) =
+            law.interaction::<true>(frame, oscillator, state, (*time_step, *allowed))?;
         *count += usize::from(unstable);
         Ok(interaction)
     }
+}
+
+/// A bound law's sphere-sphere evaluation, its results tested for finiteness when `FINITE`.
+#[inline(always)]
+fn bound_pair<F, N, T, M, R, Ro, const FINITE: bool>(
+    bound: &mut BoundLaw<ContactLaw<F, N, T, M, R, Ro>>,
+    i: &CheckedSphere<F>,
+    j: &CheckedSphere<F>,
+    state: &mut Ro::State<T::State>,
+) -> Result<Interaction<F>, ContactError>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+    Ro: RollingModel<F>,
+{
+    let BoundLaw {
+        law,
+        time_step,
+        allowed,
+        pair,
+        unstable: count,
+        ..
+    } = bound;
+    let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
+    let oscillator = || {
+        *pair.get([i.mass, j.mass], |masses| {
+            let mass = effective_mass(masses[0], masses[1]);
+            (law.normal.oscillator::<M>(mass), mass)
+        })
+    };
+    let (interaction, unstable) =
+        law.interaction::<FINITE>(frame, oscillator, state, (*time_step, *allowed))?;
+    *count += usize::from(unstable);
+    Ok(interaction)
 }

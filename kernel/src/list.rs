@@ -15,7 +15,7 @@ use crate::checked::CheckedSphere;
 use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::Float;
-use crate::geometry::Separation;
+use crate::geometry::{Separation, reaches_wall};
 use crate::law::{ContactForces, Interaction};
 use crate::spheres::Spheres;
 use crate::table::MaterialTable;
@@ -669,7 +669,7 @@ fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
     Ok(())
 }
 
-/// Every sphere against every wall, one at a time, committed as they go.
+/// Every sphere against every wall, sifted by distance, one at a time, committed as they go.
 fn evaluate_walls<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
@@ -681,11 +681,18 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
         return Ok(());
     }
     for (k, states) in states.chunks_mut(walls.len()).enumerate() {
-        let body = CheckedSphere::trusted(spheres.sphere(k));
-        let material = spheres.material(k) as usize;
+        let (position, radius) = (spheres.position(k), spheres.radius(k));
         for (w, (wall, state)) in walls.iter().zip(states).enumerate() {
-            let law = &mut bound[material][wall.material as usize];
             let place = first + k * walls.len() + w;
+            // Sifted by the one-contact path's own test: most spheres are far from every wall,
+            // and apart is a reset state and a record, with no sphere gathered.
+            if !reaches_wall(position, radius, &wall.wall) {
+                *state = L::State::default();
+                sink.record(place, Interaction::Apart);
+                continue;
+            }
+            let body = CheckedSphere::trusted(spheres.sphere(k));
+            let law = &mut bound[spheres.material(k) as usize][wall.material as usize];
             match law.sphere_wall(&body, &wall.wall, state) {
                 Ok(Interaction::Touching(c)) => sink.wall(place, k, &c),
                 Ok(Interaction::Apart) => sink.record(place, Interaction::Apart),
@@ -748,7 +755,10 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
 
     /// The sifted pairs one at a time through the one-contact path, each touching pair committed
     /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
-    /// forces the caller puts back); returns the first refused.
+    /// forces the caller puts back); returns the first refused. The forces and states are tested
+    /// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
+    /// when that test or a contact fails, [`Staged::first_refused`] re-runs the pairs checked to
+    /// name the first refused in list order.
     #[inline(always)]
     fn one_at_a_time<L: Law<Float = F, State = S>, const MATERIALS: usize>(
         &mut self,
@@ -762,7 +772,9 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             usize,
         ),
     ) -> Option<(usize, ContactError)> {
-        for &k in &self.touching[..found] {
+        let mut probe = F::ZERO;
+        let mut finite_states = true;
+        for (place, &k) in self.touching[..found].iter().enumerate() {
             let k = usize::from(k);
             let [i, j] = chunk[k].map(|x| x as usize);
             let law = &mut bound[spheres.material(i) as usize][spheres.material(j) as usize];
@@ -771,14 +783,32 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                 CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
             );
             let mut state = saved[k];
-            match law.sphere_sphere(&a, &b, &mut state) {
-                Ok(Interaction::Touching(forces)) => sink.pair(first + k, [i, j], &forces),
+            match law.sphere_sphere_deferred(&a, &b, &mut state) {
+                Ok(Interaction::Touching(forces)) => {
+                    probe += forces.finite_probe();
+                    finite_states &= state.is_finite();
+                    sink.pair(first + k, [i, j], &forces);
+                }
                 Ok(Interaction::Apart) => {}
-                Err(error) => return Some((k, error)),
+                Err(error) => {
+                    let earlier = &self.touching[..place];
+                    let refused = first_refused(spheres, (chunk, shifts), saved, earlier, bound);
+                    return Some(refused.unwrap_or((k, error)));
+                }
             }
             states[k] = state;
         }
-        None
+        if probe.is_finite() && finite_states {
+            return None;
+        }
+        // A finite-valued probe that overflowed finds nothing: the chunk stands as evaluated.
+        first_refused(
+            spheres,
+            (chunk, shifts),
+            saved,
+            &self.touching[..found],
+            bound,
+        )
     }
 
     /// The sifted pairs through the batch path: sorted by pair of materials (a block holds one
@@ -837,6 +867,32 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         }
         pairs.failed
     }
+}
+
+/// The first of the sifted `places` that the one-contact path refuses, each evaluated checked
+/// from its saved state on a copy of its bound law (nothing is written, nothing counted twice).
+#[cold]
+#[inline(never)]
+fn first_refused<L: Law, const MATERIALS: usize>(
+    spheres: &impl Spheres<L::Float>,
+    (chunk, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
+    saved: &[L::State],
+    places: &[u16],
+    bound: &[[BoundLaw<L>; MATERIALS]; MATERIALS],
+) -> Option<(usize, ContactError)> {
+    places.iter().find_map(|&k| {
+        let k = usize::from(k);
+        let [i, j] = chunk[k].map(|x| x as usize);
+        let mut law = bound[spheres.material(i) as usize][spheres.material(j) as usize];
+        let (a, b) = (
+            CheckedSphere::trusted(spheres.sphere(i)),
+            CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
+        );
+        let mut state = saved[k];
+        law.sphere_sphere(&a, &b, &mut state)
+            .err()
+            .map(|error| (k, error))
+    })
 }
 
 /// One chunk's pairs as the batch path reads and writes them: the spheres from the arrays (j

@@ -164,6 +164,8 @@ struct Measured {
     mean_overlap: f64,
     /// Sphere-sphere contact-steps at the Coulomb limit, over all contact-steps.
     sliding_fraction: f64,
+    /// Sphere-sphere contact-steps of the last run (touching pairs summed over its steps).
+    pair_contact_steps: usize,
     /// Whether the scene evaluated its pairs in the kernel's batches ([`Law::VECTORISES`]).
     batches: bool,
 }
@@ -178,6 +180,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
     let mut seconds = Vec::new();
     let mut last = (0.0, 0.0, 0.0);
     let mut sliding_fraction = 0.0;
+    let mut pair_contact_steps = 0;
     for _ in 0..o.repeat {
         let mut scene = OwnedScene::<L, W>::new(
             spheres.to_vec(),
@@ -207,6 +210,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
         );
         let n = spheres.len() as f64;
         sliding_fraction = sliding as f64 / touching.max(1) as f64;
+        pair_contact_steps = touching;
         last = (
             scene.kinetic_energy(),
             2.0 * stats.pair_contacts as f64 / n,
@@ -224,6 +228,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
         contacts_per_particle: last.1,
         mean_overlap: last.2,
         sliding_fraction,
+        pair_contact_steps,
         batches: L::VECTORISES,
     })
 }
@@ -428,8 +433,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         m.kinetic_energy, m.contacts_per_particle, m.mean_overlap
     );
     println!(
-        "  sliding: {:.2} % of pair contact-steps",
-        100.0 * m.sliding_fraction
+        "  sliding: {:.2} % of {} pair contact-steps",
+        100.0 * m.sliding_fraction,
+        m.pair_contact_steps
     );
     Ok(())
 }
