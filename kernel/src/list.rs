@@ -669,7 +669,8 @@ fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
     Ok(())
 }
 
-/// Every sphere against every wall, sifted by distance, one at a time, committed as they go.
+/// Every sphere against every wall, sifted by distance ([`next_reaching`]), one at a time,
+/// committed as they go.
 fn evaluate_walls<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
@@ -680,33 +681,58 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
     if walls.is_empty() {
         return Ok(());
     }
-    for (k, states) in states.chunks_mut(walls.len()).enumerate() {
-        let (position, radius) = (spheres.position(k), spheres.radius(k));
-        for (w, (wall, state)) in walls.iter().zip(states).enumerate() {
-            let place = first + k * walls.len() + w;
-            // Sifted by the one-contact path's own test: most spheres are far from every wall,
-            // and apart is a reset state and a record, with no sphere gathered.
-            if !reaches_wall(position, radius, &wall.wall) {
-                *state = L::State::default();
-                sink.record(place, Interaction::Apart);
-                continue;
-            }
-            let body = CheckedSphere::trusted(spheres.sphere(k));
-            let law = &mut bound[spheres.material(k) as usize][wall.material as usize];
-            match law.sphere_wall(&body, &wall.wall, state) {
-                Ok(Interaction::Touching(c)) => sink.wall(place, k, &c),
-                Ok(Interaction::Apart) => sink.record(place, Interaction::Apart),
-                Err(error) => {
-                    return Err(ListError::Wall {
-                        sphere: k,
-                        wall: w,
-                        error,
-                    });
-                }
+    if let Some(records) = sink.records.as_deref_mut() {
+        records[first..first + states.len()].fill(Interaction::Apart);
+    }
+    let count = walls.len();
+    let mut from = 0;
+    while let Some(place) = next_reaching(spheres, walls, states, from) {
+        from = place + 1;
+        let (k, w) = (place / count, place % count);
+        let wall = &walls[w];
+        let body = CheckedSphere::trusted(spheres.sphere(k));
+        let law = &mut bound[spheres.material(k) as usize][wall.material as usize];
+        match law.sphere_wall(&body, &wall.wall, &mut states[place]) {
+            Ok(Interaction::Touching(c)) => sink.wall(first + place, k, &c),
+            Ok(Interaction::Apart) => {}
+            Err(error) => {
+                return Err(ListError::Wall {
+                    sphere: k,
+                    wall: w,
+                    error,
+                });
             }
         }
     }
     Ok(())
+}
+
+/// From place `from` on (sphere by sphere, wall by wall), resets the state of every contact
+/// whose sphere cannot reach its wall by the one-contact path's own test, and returns the first
+/// place whose sphere can. Most spheres are far from every wall: a small loop of its own keeps
+/// their cost to a distance and a store.
+#[inline(never)]
+fn next_reaching<F: Float, S: Default>(
+    spheres: &impl Spheres<F>,
+    walls: &[MaterialWall<F>],
+    states: &mut [S],
+    from: usize,
+) -> Option<usize> {
+    let count = walls.len();
+    let (mut k, mut w) = (from / count, from % count);
+    while k < spheres.len() {
+        let (position, radius) = (spheres.position(k), spheres.radius(k));
+        while w < count {
+            let place = k * count + w;
+            if reaches_wall(position, radius, &walls[w].wall) {
+                return Some(place);
+            }
+            states[place] = S::default();
+            w += 1;
+        }
+        (k, w) = (k + 1, 0);
+    }
+    None
 }
 
 /// The working memory of one chunk: the sifted places (in list order), the same sorted by pair
