@@ -74,7 +74,7 @@ results="$work/results.txt"
     "$bin/contact_count" linear-aa 20
   count contact_hertz_aa 'contacts evaluated: (\d+)' '*contact_count::measured*' \
     "$bin/contact_count" hertz-aa 20
-  count scene_pair_phase 'of (\d+) pair contact-steps' '*MaterialTable*evaluate_by*' \
+  count scene_pair_phase 'of (\d+) pair contact-steps' '*MaterialTable*evaluate_with*' \
     "$bin/scene_bench" --steps 100 --repeat 1
   count scene_step 'of (\d+) pair contact-steps' '*Scene*step_on*' \
     "$bin/scene_bench" --steps 100 --repeat 1
@@ -108,7 +108,9 @@ for line in open(budgets):
 failed = 0
 for name, (own, other) in figures.items():
     limit = budget.get(name)
-    if limit is None:
+    if own == 0:
+        verdict, failed = "NOTHING COUNTED (is the measured function renamed?)", failed + 1
+    elif limit is None:
         verdict, failed = "NO BUDGET", failed + 1
     elif own > 1.03 * limit:
         verdict, failed = f"OVER BUDGET ({100 * (own / limit - 1):+.1f} %)", failed + 1

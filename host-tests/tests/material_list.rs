@@ -4,12 +4,14 @@
 
 use host_tests::impact::floor;
 use host_tests::random::Xorshift;
+use host_tests::scene::Threads;
 use proptest::prelude::*;
+use soft_sphere::executor::{Executor, Serial};
 use soft_sphere::{
     Backup, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing, Interaction,
-    LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput, Material,
-    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, Parameter, ParameterError, Route,
-    SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall, effective_mass,
+    LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput, ListStats, Material,
+    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, PairLoad, Parameter, ParameterError,
+    Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall, effective_mass,
 };
 
 type Linear = LinearAA<f64>;
@@ -1215,4 +1217,172 @@ fn a_chunk_tested_at_once_names_the_first_refused_pair_in_list_order() {
         bits(&(&force, &torque, &states)),
         bits(&(&peer.0, &peer.1, &peer_states))
     );
+}
+
+/// What [`evaluate_on`] gives: the result, the forces and torques, and everything it wrote as
+/// text.
+type Evaluated = (
+    Result<ListStats<f64>, ListError>,
+    Vec<Vec3<f64>>,
+    Vec<Vec3<f64>>,
+    String,
+);
+
+/// One list evaluation of `m` on the given executor (`loads` empty: one thread), from `states`
+/// and `wall_states`, which it advances: the forces, torques, records and statistics, as text.
+fn evaluate_on<E: Executor>(
+    t: &MaterialTable<Linear, 3>,
+    (executor, loads): (&E, &mut [PairLoad<f64>]),
+    (m, pairs, walls): (&Mixture, &[[u32; 2]], &[MaterialWall<f64>]),
+    dt: soft_sphere::TimeStep<f64>,
+    (states, wall_states): (&mut [State], &mut [State]),
+) -> Evaluated {
+    let n = m.position.len();
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let contacts = pairs.len() + n * walls.len();
+    let mut records = vec![Interaction::Apart; contacts];
+    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
+    let list = ContactList {
+        pairs,
+        shifts: &[],
+        pair_states: states,
+        walls,
+        wall_states,
+    };
+    let out = ListOutput {
+        force: &mut force,
+        torque: &mut torque,
+        backup: Backup {
+            states: &mut saved.0,
+            loads: &mut saved.1,
+        },
+        records: Some(&mut records),
+    };
+    let result = t.evaluate_on((executor, loads), dt, &m.arrays(), list, out);
+    let text = bits(&(&force, &torque, &records));
+    (result, force, torque, text)
+}
+
+/// The pairs spread over 1, 2 and 3 threads (stretches of the list each with its own states
+/// and loads, summed in list order after) give the one-thread bits step after step: forces,
+/// torques, states, records and statistics, tolerated unstable contacts counted once; a refusal
+/// in two stretches names the first in list order, whichever thread ends first, and changes
+/// nothing.
+#[test]
+fn pairs_spread_over_threads_give_the_one_thread_bits() {
+    let t = table();
+    let walls = [floor_of(2)];
+    let start = Mixture::new(400, 13);
+    let chunks = start.pairs.len().div_ceil(256);
+    assert!(chunks >= 4, "{} pairs", start.pairs.len());
+    // A step checked for glass alone, past the steel pairs' limit, tolerated: those contacts
+    // are counted, not refused.
+    let glass_only = vec![0u32; start.position.len()];
+    let glass = SphereArrays {
+        material: &glass_only,
+        ..start.arrays()
+    };
+    let light = start.mass.iter().copied().fold(f64::INFINITY, f64::min);
+    let glass_limit = t.law(0, 0).unwrap().critical_time_step(light / 2.0);
+    let dt = t
+        .time_step(0.9 * glass_limit, &glass, &[])
+        .unwrap()
+        .tolerating_unstable_contacts();
+    for threads in [1, 2, 3] {
+        let pool = Threads::new(threads).unwrap();
+        let mut m = Mixture::new(400, 13);
+        let contacts = (m.pairs.len(), m.position.len() * walls.len());
+        let mut one = (
+            vec![State::default(); contacts.0],
+            vec![State::default(); contacts.1],
+        );
+        let mut spread = one.clone();
+        let mut loads = vec![PairLoad::default(); m.pairs.len()];
+        let pairs = m.pairs.clone();
+        for step in 0..20 {
+            let (serial, force, torque, serial_text) = evaluate_on(
+                &t,
+                (&Serial, &mut []),
+                (&m, &pairs, &walls),
+                dt,
+                (&mut one.0, &mut one.1),
+            );
+            let (threaded, _, _, threaded_text) = evaluate_on(
+                &t,
+                (&pool, &mut loads),
+                (&m, &pairs, &walls),
+                dt,
+                (&mut spread.0, &mut spread.1),
+            );
+            assert_eq!(threaded, serial, "{threads} threads, step {step}");
+            assert_eq!(threaded_text, serial_text, "{threads} threads, step {step}");
+            assert_eq!(bits(&spread), bits(&one), "{threads} threads, step {step}");
+            if step == 0 {
+                let stats = serial.unwrap();
+                assert!(
+                    stats.pair_contacts > 100 && stats.unstable_contacts > 0,
+                    "{stats:?}"
+                );
+            }
+            m.advance(&force, &torque, 2.0e-5);
+        }
+        // Refusals in the second and the last stretch (a non-finite contact, coincident centres):
+        // the second's, and the caller's arrays as they were.
+        let mut m = Mixture::new(400, 13);
+        let touching = |k: usize| {
+            let [i, j] = m.pairs[k].map(|x| x as usize);
+            let reach = m.radius[i] + m.radius[j];
+            (m.position[j] - m.position[i]).norm_squared() < reach * reach
+        };
+        let second = (256..512).find(|&k| touching(k)).unwrap();
+        let last = ((chunks - 1) * 256..m.pairs.len())
+            .rev()
+            .find(|&k| touching(k))
+            .unwrap();
+        let mut pairs = m.pairs.clone();
+        pairs[last] = [pairs[last][0]; 2];
+        let [i, j] = pairs[second].map(|x| x as usize);
+        (m.velocity[i].x, m.velocity[j].x) = (1.7e308, -1.7e308);
+        let preload = |k: usize| State {
+            displacement: Vec3::new(1e-7 * k as f64, 0.0, 0.0),
+        };
+        let mut states: Vec<State> = (0..pairs.len()).map(preload).collect();
+        let mut wall_states: Vec<State> = (0..m.position.len()).map(preload).collect();
+        let before = bits(&(&states, &wall_states));
+        let (refused, ..) = evaluate_on(
+            &t,
+            (&pool, &mut loads),
+            (&m, &pairs, &walls),
+            dt,
+            (&mut states, &mut wall_states),
+        );
+        assert_eq!(
+            refused.err(),
+            Some(ListError::Pair {
+                pair: second,
+                error: ContactError::NonFiniteResult
+            }),
+            "{threads} threads"
+        );
+        assert_eq!(bits(&(&states, &wall_states)), before, "{threads} threads");
+    }
+}
+
+/// The loads are empty or one per pair.
+#[test]
+fn loads_of_another_length_are_refused() {
+    let t = table();
+    let m = Mixture::new(30, 2);
+    let dt = t.time_step(1.0e-6, &m.arrays(), &[]).unwrap();
+    let pool = Threads::new(2).unwrap();
+    let mut loads = vec![PairLoad::default(); m.pairs.len() + 1];
+    let mut states = vec![State::default(); m.pairs.len()];
+    let (refused, ..) = evaluate_on(
+        &t,
+        (&pool, &mut loads),
+        (&m, &m.pairs, &[]),
+        dt,
+        (&mut states, &mut []),
+    );
+    assert_eq!(refused, Err(ListError::Length(ListArray::Loads)));
 }

@@ -395,6 +395,7 @@ impl<const K: usize> VecBuffers<K> {
             states: &mut self.states,
             parking: &mut self.parking,
             records: &mut [],
+            loads: &mut [],
         };
         (&self.materials, buffers)
     }
@@ -563,6 +564,7 @@ fn stored_states_of_pairs_outside_the_scene_are_refused() {
         states: &mut b.states[..alone.states],
         parking: &mut b.parking[..1],
         records: &mut [],
+        loads: &mut [],
     };
     let alone = Scene::<Linear, _, 4>::new(
         open_box(),
@@ -952,6 +954,8 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
             states: 2 * (40 + 7 * 2),
             parking: 7,
             records: 40 + 7 * 2,
+            // One per list place, for the pairs spread over threads.
+            loads: 40,
         })
     );
     // A law that stores nothing needs no parking; a scene without records no records.

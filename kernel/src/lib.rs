@@ -205,6 +205,7 @@ mod checked;
 pub mod checks;
 mod engine;
 mod error;
+pub mod executor;
 mod float;
 #[cfg(feature = "arbitrary")]
 mod fuzz_inputs;
@@ -219,6 +220,7 @@ mod normal;
 pub mod rolling;
 mod rotation;
 mod spheres;
+mod spread;
 mod store;
 #[cfg(feature = "proptest")]
 pub mod strategies;
@@ -253,6 +255,7 @@ pub use normal::{
 pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use spheres::{SphereArrays, SphereSlice, Spheres};
+pub use spread::PairLoad;
 pub use store::{ContactHistory, ContactKey};
 pub use table::{MaterialTable, TableError};
 pub use tangential::{

@@ -14,10 +14,12 @@ use crate::body::{Sphere, Wall, effective_mass};
 use crate::checked::CheckedSphere;
 use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
+use crate::executor::{Executor, Serial};
 use crate::float::Float;
 use crate::geometry::{Separation, reaches_wall};
 use crate::law::{ContactForces, Interaction};
 use crate::spheres::Spheres;
+use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
@@ -161,6 +163,8 @@ pub enum ListArray {
     BackupStates,
     /// [`Backup::loads`] (two per sphere).
     BackupLoads,
+    /// The per-pair loads of [`MaterialTable::evaluate_on`] (none, or one per pair).
+    Loads,
 }
 
 /// Why a list evaluation or its time step was refused. Nothing the caller gave has changed.
@@ -459,6 +463,46 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
+        self.evaluate_with(route, (&Serial, &mut []), time_step, spheres, list, out)
+    }
+
+    /// [`MaterialTable::evaluate`] with the pairs spread over `executor`'s threads: each
+    /// thread evaluates stretches of the list into `loads` (one per pair, working memory the
+    /// engine keeps), then one thread adds them onto the spheres in list order. The same bits,
+    /// states, records, statistics and errors as [`MaterialTable::evaluate`] for any executor and
+    /// any number of threads. With a [`Serial`] executor, or `loads` empty, the pairs are
+    /// evaluated on this thread as [`MaterialTable::evaluate`] does.
+    ///
+    /// # Errors
+    /// As [`MaterialTable::evaluate`]; [`ListError::Length`] with [`ListArray::Loads`] for
+    /// `loads` neither empty nor one per pair.
+    pub fn evaluate_on<E: Executor>(
+        &self,
+        (executor, loads): (&E, &mut [PairLoad<L::Float>]),
+        time_step: TimeStep<L::Float>,
+        spheres: &impl Spheres<L::Float>,
+        list: ContactList<'_, L::Float, L::State>,
+        out: ListOutput<'_, L::Float, L::State>,
+    ) -> Result<ListStats<L::Float>, ListError> {
+        self.evaluate_with(
+            Route::Auto,
+            (executor, loads),
+            time_step,
+            spheres,
+            list,
+            out,
+        )
+    }
+
+    fn evaluate_with<E: Executor>(
+        &self,
+        route: Route,
+        (executor, loads): (&E, &mut [PairLoad<L::Float>]),
+        time_step: TimeStep<L::Float>,
+        spheres: &impl Spheres<L::Float>,
+        list: ContactList<'_, L::Float, L::State>,
+        out: ListOutput<'_, L::Float, L::State>,
+    ) -> Result<ListStats<L::Float>, ListError> {
         let blocks = route.uses_blocks::<L>();
         let n = spheres.len();
         let (pairs, shifts, walls) = (list.pairs, list.shifts, list.walls);
@@ -482,6 +526,11 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             (records, contacts, ListArray::Records),
             (out.backup.states.len(), contacts, ListArray::BackupStates),
             (out.backup.loads.len(), 2 * n, ListArray::BackupLoads),
+            (
+                loads.len(),
+                if loads.is_empty() { 0 } else { pairs.len() },
+                ListArray::Loads,
+            ),
         ];
         if let Some(&(_, _, array)) = lengths.iter().find(|(got, wanted, _)| got != wanted) {
             return Err(ListError::Length(array));
@@ -516,63 +565,113 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         let outcome = if blocks {
             evaluate_pairs::<L, MATERIALS, true>(
                 spheres,
-                (pairs, shifts),
+                (pairs, shifts, 0),
                 states,
                 &mut bound,
+                &mut sink,
+            )
+            .map(|()| 0)
+        } else if E::PARALLEL && !loads.is_empty() {
+            spread_pairs(
+                executor,
+                spheres,
+                (pairs, shifts),
+                states,
+                loads,
+                &bound,
                 &mut sink,
             )
         } else {
             evaluate_pairs::<L, MATERIALS, false>(
                 spheres,
-                (pairs, shifts),
+                (pairs, shifts, 0),
                 states,
                 &mut bound,
                 &mut sink,
             )
+            .map(|()| 0)
         };
-        let outcome = outcome.and_then(|()| {
+        let outcome = outcome.and_then(|spread_unstable| {
             let walls = (walls, &mut *list.wall_states);
             evaluate_walls(spheres, walls, &mut bound, &mut sink, pairs.len())
+                .map(|()| spread_unstable)
                 .map_err(|error| (error, pairs.len()))
         });
-        if let Err((error, copied)) = outcome {
-            // Only the pairs whose states were copied can have changed.
-            list.pair_states[..copied].copy_from_slice(&saved_pairs[..copied]);
-            list.wall_states.copy_from_slice(saved_walls);
-            sink.force.copy_from_slice(saved_force);
-            sink.torque.copy_from_slice(saved_torque);
-            return Err(error);
-        }
-        sink.stats.unstable_contacts = bound
-            .iter()
-            .flatten()
-            .map(BoundLaw::unstable_contacts)
-            .sum();
+        let spread_unstable = match outcome {
+            Ok(count) => count,
+            Err((error, copied)) => {
+                // Only the pairs whose states were copied can have changed.
+                list.pair_states[..copied].copy_from_slice(&saved_pairs[..copied]);
+                list.wall_states.copy_from_slice(saved_walls);
+                sink.force.copy_from_slice(saved_force);
+                sink.torque.copy_from_slice(saved_torque);
+                return Err(error);
+            }
+        };
+        sink.stats.unstable_contacts = spread_unstable
+            + bound
+                .iter()
+                .flatten()
+                .map(BoundLaw::unstable_contacts)
+                .sum::<usize>();
         Ok(sink.stats)
     }
 }
 
+/// Where a chunk's touching pairs go as they are evaluated, in list order within the chunk:
+/// the [`Sink`] (added into the engine's arrays at once, on one thread) or a piece's
+/// [`PairLoads`](crate::spread::PairLoads) (kept per pair, added in list order after the
+/// threads).
+pub(crate) trait Commit<F> {
+    /// Places `first..first + len` are about to be evaluated: apart until committed.
+    fn begin_chunk(&mut self, first: usize, len: usize);
+
+    /// Pair `[i, j]`, the `k`-th contact of the list, touching with `c`.
+    fn pair(&mut self, k: usize, pair: [usize; 2], c: &ContactForces<F>);
+}
+
 /// Where the contacts' outcomes go, in list order.
-struct Sink<'o, F> {
-    force: &'o mut [Vec3<F>],
-    torque: &'o mut [Vec3<F>],
-    records: Option<&'o mut [Interaction<F>]>,
-    stats: ListStats<F>,
+pub(crate) struct Sink<'o, F> {
+    pub(crate) force: &'o mut [Vec3<F>],
+    pub(crate) torque: &'o mut [Vec3<F>],
+    pub(crate) records: Option<&'o mut [Interaction<F>]>,
+    pub(crate) stats: ListStats<F>,
+}
+
+impl<F: Float> Commit<F> for Sink<'_, F> {
+    #[inline(always)]
+    fn begin_chunk(&mut self, first: usize, len: usize) {
+        if let Some(records) = self.records.as_deref_mut() {
+            records[first..first + len].fill(Interaction::Apart);
+        }
+    }
+
+    #[inline(always)]
+    fn pair(&mut self, k: usize, pair: [usize; 2], c: &ContactForces<F>) {
+        let load = (c.force_on_j(), c.torque_on_i, c.torque_on_j);
+        self.add_pair(pair, load, (c.overlap, c.sliding));
+        self.record(k, Interaction::Touching(*c));
+    }
 }
 
 impl<F: Float> Sink<'_, F> {
-    /// Pair `[i, j]`, the `k`-th contact of the list, touching with `c`.
+    /// A touching pair's force on j and torques on i and j added onto its spheres, and counted:
+    /// the one place where a pair's loads meet the engine's arrays, whichever thread evaluated
+    /// it.
     #[inline(always)]
-    fn pair(&mut self, k: usize, [i, j]: [usize; 2], c: &ContactForces<F>) {
-        let on_j = c.force_on_j();
+    pub(crate) fn add_pair(
+        &mut self,
+        [i, j]: [usize; 2],
+        (on_j, torque_on_i, torque_on_j): (Vec3<F>, Vec3<F>, Vec3<F>),
+        (overlap, sliding): (F, bool),
+    ) {
         self.force[i] -= on_j;
-        self.torque[i] += c.torque_on_i;
+        self.torque[i] += torque_on_i;
         self.force[j] += on_j;
-        self.torque[j] += c.torque_on_j;
+        self.torque[j] += torque_on_j;
         self.stats.pair_contacts += 1;
-        self.stats.sliding_contacts += usize::from(c.sliding);
-        self.stats.overlap_sum += c.overlap;
-        self.record(k, Interaction::Touching(*c));
+        self.stats.sliding_contacts += usize::from(sliding);
+        self.stats.overlap_sum += overlap;
     }
 
     /// Sphere `sphere`, the `k`-th contact of the list, touching a wall with `c`.
@@ -609,23 +708,29 @@ fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
 }
 
 /// Candidate pairs sifted for contact at a time.
-const SIFT: usize = 256;
+pub(crate) const SIFT: usize = 256;
+
+/// A stretch of the pair list: its pairs, their shifts (or none), and the list place of its
+/// first pair.
+pub(crate) type Stretch<'a, F> = (&'a [[u32; 2]], &'a [Vec3<F>], usize);
 
 /// Every pair, chunk by chunk: each chunk's states copied into `saved` just before it is
 /// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
-/// committed in list order. Stops at the first chunk with a refused pair, naming the first in
-/// list order, with how many pairs' states it had copied (and may have changed).
-fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
+/// committed in list order. `offset` is the list place of `pairs[0]`. Stops at the first chunk
+/// with a refused pair, naming the first in list order, with how many of these pairs' states it
+/// had copied (and may have changed).
+pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
     spheres: &impl Spheres<L::Float>,
-    (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
+    (pairs, shifts, offset): Stretch<'_, L::Float>,
     (states, saved): (&mut [L::State], &mut [L::State]),
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
-    sink: &mut Sink<'_, L::Float>,
+    sink: &mut impl Commit<L::Float>,
 ) -> Result<(), (ListError, usize)> {
     let mut staged = Staged::<L::Float, L::State>::new();
     let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
     for (c, ((chunk, states), saved)) in chunks.zip(saved.chunks_mut(SIFT)).enumerate() {
-        let first = c * SIFT;
+        let local = c * SIFT;
+        let first = offset + local;
         // Read from the copy, written afresh: a pair apart is left relaxed, as the one-contact
         // path leaves it, with no branch on the coin toss of touching.
         saved.copy_from_slice(states);
@@ -633,21 +738,17 @@ fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
             states.fill(L::State::default());
         }
         let states = (&mut *states, &*saved);
-        let shifts = shifts.get(first..first + chunk.len()).unwrap_or(&[]);
+        let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
         let found = staged.sift(spheres, (chunk, shifts));
-        if sink.records.is_some() {
-            for k in 0..chunk.len() {
-                sink.record(first + k, Interaction::Apart);
-            }
-        }
+        sink.begin_chunk(first, chunk.len());
         let failed = if BLOCKS {
             let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
-            if failed.is_none() {
+            if let (None, Some(stage)) = (failed, &staged.blocks) {
                 for &k in &staged.touching[..found] {
                     let k = usize::from(k);
-                    if staged.touches[k] {
+                    if stage.touches[k] {
                         let pair = chunk[k].map(|x| x as usize);
-                        sink.pair(first + k, pair, &staged.forces[k]);
+                        sink.pair(first + k, pair, &stage.forces[k]);
                     }
                 }
             }
@@ -663,7 +764,7 @@ fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
         };
         if let Some((k, error)) = failed {
             let pair = first + k;
-            return Err((ListError::Pair { pair, error }, first + chunk.len()));
+            return Err((ListError::Pair { pair, error }, local + chunk.len()));
         }
     }
     Ok(())
@@ -739,6 +840,14 @@ fn next_reaching<F: Float, S: Default>(
 /// of materials, each place's forces and whether it touches, and the batch path's blocks.
 struct Staged<F: Float, S> {
     touching: [u16; SIFT],
+    /// The batch path's part, made only by the blocks route (tens of kB that the single calls
+    /// would otherwise clear for nothing, once per thread's stretch).
+    blocks: Option<BlockStage<F, S>>,
+}
+
+/// The batch path's working memory of one chunk: the sifted places sorted by pair of
+/// materials, each place's forces and whether it touches, and the blocks.
+struct BlockStage<F: Float, S> {
     sorted: [u16; SIFT],
     forces: [ContactForces<F>; SIFT],
     touches: [bool; SIFT],
@@ -749,10 +858,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     fn new() -> Self {
         Self {
             touching: [0; SIFT],
-            sorted: [0; SIFT],
-            forces: [ContactForces::default(); SIFT],
-            touches: [false; SIFT],
-            group: BlockGroup::default(),
+            blocks: None,
         }
     }
 
@@ -783,7 +889,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
     /// forces the caller puts back); returns the first refused. The forces and states are tested
     /// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
-    /// when that test or a contact fails, [`Staged::first_refused`] re-runs the pairs checked to
+    /// when that test or a contact fails, [`first_refused`] re-runs the pairs checked to
     /// name the first refused in list order.
     #[inline(always)]
     fn one_at_a_time<L: Law<Float = F, State = S>, const MATERIALS: usize>(
@@ -794,7 +900,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         found: usize,
         (bound, sink, first): (
             &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
-            &mut Sink<'_, F>,
+            &mut impl Commit<F>,
             usize,
         ),
     ) -> Option<(usize, ContactError)> {
@@ -868,10 +974,16 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                 next += count;
             }
         }
+        let stage = self.blocks.get_or_insert_with(|| BlockStage {
+            sorted: [0; SIFT],
+            forces: [ContactForces::default(); SIFT],
+            touches: [false; SIFT],
+            group: BlockGroup::default(),
+        });
         let mut place = starts;
         for &k in &self.touching[..found] {
             let (a, b) = key(usize::from(k));
-            self.sorted[place[a][b]] = k;
+            stage.sorted[place[a][b]] = k;
             place[a][b] += 1;
         }
         let mut pairs = ChunkPairs {
@@ -880,15 +992,15 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             shifts,
             states,
             saved,
-            forces: &mut self.forces,
-            touches: &mut self.touches,
+            forces: &mut stage.forces,
+            touches: &mut stage.touches,
             failed: None,
         };
         for (a, row) in counts.iter().enumerate() {
             for (b, &count) in row.iter().enumerate() {
-                let places = &self.sorted[starts[a][b]..starts[a][b] + count];
+                let places = &stage.sorted[starts[a][b]..starts[a][b] + count];
                 let places = places.iter().map(|&k| usize::from(k));
-                self.group.evaluate(&mut bound[a][b], places, &mut pairs);
+                stage.group.evaluate(&mut bound[a][b], places, &mut pairs);
             }
         }
         pairs.failed

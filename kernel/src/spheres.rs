@@ -15,7 +15,7 @@ pub(crate) mod sealed {
 
 /// The spheres a list evaluation reads, in either layout. Sealed: [`SphereArrays`] and
 /// [`SphereSlice`].
-pub trait Spheres<F: Float>: sealed::Sealed {
+pub trait Spheres<F: Float>: sealed::Sealed + Sync {
     /// How many spheres.
     fn len(&self) -> usize;
 

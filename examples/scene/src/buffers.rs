@@ -2,7 +2,7 @@
 //! [`Scene::buffer_sizes`](crate::Scene::buffer_sizes), fills them with `Default::default()`,
 //! and keeps them together between scenes (the contact history lives in them).
 
-use soft_sphere::{Interaction, Vec3};
+use soft_sphere::{Interaction, PairLoad, Vec3};
 
 use crate::parking::Parking;
 
@@ -26,6 +26,9 @@ pub struct BufferSizes {
     /// The length of [`SceneBuffers::records`]: one per list place and per sphere and wall when the scene
     /// keeps each contact's outcome (its per-contact view and energy accounting), else none.
     pub records: usize,
+    /// The length of [`SceneBuffers::loads`]: one per list place, for a scene whose pairs are
+    /// spread over an executor's threads (it may be empty: the pairs then take one thread).
+    pub loads: usize,
 }
 
 /// The caller-owned buffers of a [`Scene`](crate::Scene), of the lengths
@@ -50,4 +53,8 @@ pub struct SceneBuffers<'a, F, S, const K: usize> {
     /// Each contact's outcome of the last step, or empty: then the scene keeps no per-contact
     /// view and does no energy accounting.
     pub records: &'a mut [Interaction<F>],
+    /// Each pair's loads while its thread hands them on (working memory of
+    /// [`MaterialTable::evaluate_on`](soft_sphere::MaterialTable::evaluate_on)), or empty: then
+    /// the pairs are evaluated on one thread, whatever the executor.
+    pub loads: &'a mut [PairLoad<F>],
 }

@@ -3,7 +3,7 @@
 //! distance plus a skin (rebuilt from the grid only when a sphere has moved half the skin or
 //! crossed a periodic boundary), the stored contact states kept beside the list, walls with
 //! materials as a compile-time slot, and one step of symplectic Euler or velocity Verlet; the
-//! integration can be spread over a caller's [`Executor`] with the same bits.
+//! pairs and the integration can be spread over a caller's [`Executor`] with the same bits.
 //!
 //! It reaches the contact laws only through the kernel's list seam
 //! ([`MaterialTable::evaluate`](soft_sphere::MaterialTable::evaluate)): each step hands it the
@@ -62,7 +62,7 @@ pub use walls::{NoWalls, WallSet};
 use core::marker::PhantomData;
 
 use soft_sphere::{
-    CheckedSphere, Float, Interaction, Law, MaterialTable, SphereSlice, TimeStep, Vec3,
+    CheckedSphere, Float, Interaction, Law, MaterialTable, PairLoad, SphereSlice, TimeStep, Vec3,
 };
 
 use energy::Ledger;
@@ -145,6 +145,7 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
     saved_states: &'a mut [L::State],
     parking: &'a mut [Parking<L::State, K>],
     records: &'a mut [Interaction<L::Float>],
+    loads: &'a mut [PairLoad<L::Float>],
     walls: W,
     candidate_count: usize,
     grid: Grid<L::Float>,
@@ -212,6 +213,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             states: 2 * contacts,
             parking: if stores::<L::State>() { spheres } else { 0 },
             records: if records { contacts } else { 0 },
+            loads: list_capacity,
         })
     }
 
@@ -222,7 +224,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// # Errors
     /// [`SceneError::Domain`] for a bad domain or skin; [`SceneError::Materials`] for material
     /// ids that are not one per sphere; [`SceneError::BufferLength`] for a buffer of another
-    /// length than [`Scene::buffer_sizes`] gives (`records` may be empty);
+    /// length than [`Scene::buffer_sizes`] gives (`records` and `loads` may be empty);
     /// [`SceneError::History`] for stored states of pairs that are not this scene's.
     pub fn new(
         domain: Domain<L::Float>,
@@ -247,7 +249,8 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             && b.states.len() == sizes.states
             && b.parking.len() == sizes.parking
             && n <= u32::MAX as usize
-            && (b.records.is_empty() || b.records.len() == sizes.records);
+            && (b.records.is_empty() || b.records.len() == sizes.records)
+            && (b.loads.is_empty() || b.loads.len() == sizes.loads);
         if !lengths_ok {
             return Err(SceneError::BufferLength);
         }
@@ -283,6 +286,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             saved_states,
             parking: b.parking,
             records: b.records,
+            loads: b.loads,
             walls,
             // Until the first build, the whole buffer: its relaxed states are skipped.
             candidate_count: list,

@@ -3,7 +3,7 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use soft_sphere::{CheckedSphere, Interaction, Law, Sphere, Vec3};
+use soft_sphere::{CheckedSphere, Interaction, Law, PairLoad, Sphere, Vec3};
 
 use crate::parallel::{Executor, Serial};
 use crate::{
@@ -70,6 +70,7 @@ pub struct OwnedScene<L: Law, W> {
     states: Vec<L::State>,
     parking: Vec<Parking<L::State, PARKING>>,
     records: Vec<Interaction<L::Float>>,
+    loads: Vec<PairLoad<L::Float>>,
     list_builds: usize,
     halted: bool,
 }
@@ -114,6 +115,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             states: vec![L::State::default(); sizes.states],
             parking: vec![Parking::default(); sizes.parking],
             records: Vec::new(),
+            loads: vec![PairLoad::default(); sizes.loads],
             list_builds: 0,
             halted: false,
         })
@@ -158,6 +160,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             states: &mut self.states,
             parking: &mut self.parking,
             records: &mut self.records,
+            loads: &mut self.loads,
         };
         let mut scene = Scene::new(
             self.domain,

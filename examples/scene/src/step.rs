@@ -70,9 +70,10 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         self.step_on(input, &Serial)
     }
 
-    /// One step of the scene, its integration spread over `executor`'s threads (the contacts
-    /// are one call of the kernel's list seam, on this thread). The result is the same bits for
-    /// any executor and any number of threads.
+    /// One step of the scene spread over `executor`'s threads: the pairs through the kernel's
+    /// list seam ([`MaterialTable::evaluate_on`](soft_sphere::MaterialTable::evaluate_on), when
+    /// the scene has its per-pair loads), the integration in stretches of spheres. The result is
+    /// the same bits for any executor and any number of threads.
     ///
     /// # Errors
     /// - [`StepError::Pair`], [`StepError::Wall`]: the first refused contact, in list order and
@@ -99,7 +100,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         let half = <L::Float as Float>::HALF;
         let mut stats = match input.integrator {
             Integrator::SymplecticEuler => {
-                let stats = self.evaluate(input, true)?;
+                let stats = self.evaluate(input, true, executor)?;
                 self.forces_current = false;
                 self.advance(input.gravity, (dt, Some(dt)), executor)?;
                 stats
@@ -107,12 +108,12 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             Integrator::VelocityVerlet => {
                 if !self.forces_current {
                     // The first step's forces: the history is not advanced by them.
-                    self.evaluate(input, false)?;
+                    self.evaluate(input, false, executor)?;
                 }
                 // The forces no longer belong to the positions until the evaluation succeeds.
                 self.forces_current = false;
                 self.advance(input.gravity, (dt * half, Some(dt)), executor)?;
-                let stats = self.evaluate(input, true)?;
+                let stats = self.evaluate(input, true, executor)?;
                 self.forces_current = true;
                 self.advance(input.gravity, (dt * half, None), executor)?;
                 stats
@@ -245,10 +246,11 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// one call of the kernel's list seam, and, when `commit`, the history advanced (all or
     /// nothing: the seam puts everything back when it refuses a contact, and a step that does
     /// not commit puts the states back from the seam's copy).
-    fn evaluate<const M: usize>(
+    fn evaluate<E: Executor, const M: usize>(
         &mut self,
         input: &StepInput<'_, L, M>,
         commit: bool,
+        executor: &E,
     ) -> Result<StepStats<L::Float>, StepError> {
         if !self.list_current {
             self.rebuild_list()?;
@@ -280,9 +282,15 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             records: keep_records.then(|| &mut self.records[..contacts]),
         };
         self.records_current = false;
+        // Empty (the pairs on this thread), or one per list place.
+        let loads = if self.loads.is_empty() {
+            &mut [][..]
+        } else {
+            &mut self.loads[..count]
+        };
         let list_stats = input
             .table
-            .evaluate(input.time_step, &spheres, list, out)
+            .evaluate_on((executor, loads), input.time_step, &spheres, list, out)
             .map_err(|error| StepError::from_list(error, &self.pairs[..count]))?;
         self.records_current = keep_records;
         let (saved_pairs, saved_walls) = self.saved_states[..contacts].split_at(count);

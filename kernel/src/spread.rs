@@ -1,0 +1,165 @@
+//! The list seam's pairs spread over an [`Executor`]'s threads: stretches of the list evaluated
+//! each into its own per-pair loads, then added onto the spheres on one thread in list order, so
+//! the sums are the bits one thread gives.
+
+use core::array;
+
+use crate::engine::{BoundLaw, Law};
+use crate::executor::{Executor, MAX_PIECES, piece_length};
+use crate::float::Float;
+use crate::law::{ContactForces, Interaction};
+use crate::list::{Commit, ListError, SIFT, Sink, evaluate_pairs};
+use crate::spheres::Spheres;
+use crate::vector::Vec3;
+
+/// One pair's loads, kept by the thread that evaluated it until they are added onto the
+/// spheres in list order: working memory an engine gives
+/// [`MaterialTable::evaluate_on`](crate::MaterialTable::evaluate_on), one per pair, filled
+/// with `Default::default()` (what it holds between calls is of no meaning).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PairLoad<F> {
+    force_on_j: Vec3<F>,
+    torque_on_i: Vec3<F>,
+    torque_on_j: Vec3<F>,
+    overlap: F,
+    sliding: bool,
+    touching: bool,
+}
+
+/// A piece's pairs as they are committed: each touching pair's loads kept at its place.
+pub(crate) struct PairLoads<'o, F> {
+    /// The list place of `loads[0]`.
+    offset: usize,
+    loads: &'o mut [PairLoad<F>],
+    records: Option<&'o mut [Interaction<F>]>,
+}
+
+impl<F: Float> Commit<F> for PairLoads<'_, F> {
+    #[inline(always)]
+    fn begin_chunk(&mut self, first: usize, len: usize) {
+        let local = first - self.offset;
+        for load in &mut self.loads[local..local + len] {
+            load.touching = false;
+        }
+        if let Some(records) = self.records.as_deref_mut() {
+            records[local..local + len].fill(Interaction::Apart);
+        }
+    }
+
+    #[inline(always)]
+    fn pair(&mut self, k: usize, _: [usize; 2], c: &ContactForces<F>) {
+        let local = k - self.offset;
+        self.loads[local] = PairLoad {
+            force_on_j: c.force_on_j(),
+            torque_on_i: c.torque_on_i,
+            torque_on_j: c.torque_on_j,
+            overlap: c.overlap,
+            sliding: c.sliding,
+            touching: true,
+        };
+        if let Some(records) = self.records.as_deref_mut() {
+            records[local] = Interaction::Touching(*c);
+        }
+    }
+}
+
+/// A stretch of the list and what its thread leaves: the tolerated unstable contacts it
+/// counted, or its first refused pair with how many of its states it had copied.
+struct Piece<'p, F, S> {
+    offset: usize,
+    pairs: &'p [[u32; 2]],
+    shifts: &'p [Vec3<F>],
+    states: &'p mut [S],
+    saved: &'p mut [S],
+    loads: PairLoads<'p, F>,
+    outcome: Result<usize, (ListError, usize)>,
+}
+
+/// Every pair, spread over `executor` in pieces of whole chunks, each with its own copy of the
+/// bound laws; then, when every piece succeeded, their loads added onto the spheres in list
+/// order. Returns the tolerated unstable contacts the pieces' bound laws counted. On a refused
+/// pair, the first in list order (the earliest piece's first) is returned with every copied
+/// state put back, so the caller has none to restore.
+pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
+    executor: &E,
+    spheres: &impl Spheres<L::Float>,
+    (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
+    (states, saved): (&mut [L::State], &mut [L::State]),
+    loads: &mut [PairLoad<L::Float>],
+    bound: &[[BoundLaw<L>; MATERIALS]; MATERIALS],
+    sink: &mut Sink<'_, L::Float>,
+) -> Result<usize, (ListError, usize)> {
+    // Stretches of at least four chunks: each thread's stretch starts its own working memory.
+    let length = piece_length(pairs.len().div_ceil(SIFT), 4) * SIFT;
+    let mut pair_pieces = pairs.chunks(length);
+    let mut state_pieces = states.chunks_mut(length);
+    let mut saved_pieces = saved.chunks_mut(length);
+    let mut load_pieces = loads.chunks_mut(length);
+    let records = sink.records.as_deref_mut().map(|r| &mut r[..pairs.len()]);
+    let mut record_pieces = records.map(|r| r.chunks_mut(length));
+    let mut offset = 0;
+    let mut pieces: [Option<Piece<'_, L::Float, L::State>>; MAX_PIECES] = array::from_fn(|_| {
+        let pairs = pair_pieces.next()?;
+        let piece = Piece {
+            offset,
+            pairs,
+            shifts: shifts.get(offset..offset + pairs.len()).unwrap_or(&[]),
+            states: state_pieces.next()?,
+            saved: saved_pieces.next()?,
+            loads: PairLoads {
+                offset,
+                loads: load_pieces.next()?,
+                records: record_pieces.as_mut().and_then(Iterator::next),
+            },
+            outcome: Ok(0),
+        };
+        offset += pairs.len();
+        Some(piece)
+    });
+    executor.for_each_mut(&mut pieces, |piece| {
+        let Some(piece) = piece else { return };
+        let mut bound = *bound;
+        piece.outcome = evaluate_pairs::<L, MATERIALS, false>(
+            spheres,
+            (piece.pairs, piece.shifts, piece.offset),
+            (&mut *piece.states, &mut *piece.saved),
+            &mut bound,
+            &mut piece.loads,
+        )
+        .map(|()| {
+            bound
+                .iter()
+                .flatten()
+                .map(BoundLaw::unstable_contacts)
+                .sum()
+        });
+    });
+    let refused = pieces
+        .iter()
+        .flatten()
+        .find_map(|piece| piece.outcome.as_ref().err().map(|&(error, _)| error));
+    if let Some(error) = refused {
+        // Every piece puts back what it copied, so the caller has nothing to restore.
+        for piece in pieces.iter_mut().flatten() {
+            let copied = match piece.outcome {
+                Ok(_) => piece.states.len(),
+                Err((_, copied)) => copied,
+            };
+            piece.states[..copied].copy_from_slice(&piece.saved[..copied]);
+        }
+        return Err((error, 0));
+    }
+    let unstable = pieces
+        .iter()
+        .flatten()
+        .map(|piece| piece.outcome.as_ref().map_or(0, |&count| count))
+        .sum();
+    for (&[i, j], load) in pairs.iter().zip(loads.iter()) {
+        if load.touching {
+            let pair = [i as usize, j as usize];
+            let torques = (load.force_on_j, load.torque_on_i, load.torque_on_j);
+            sink.add_pair(pair, torques, (load.overlap, load.sliding));
+        }
+    }
+    Ok(unstable)
+}
