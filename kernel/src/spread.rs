@@ -12,8 +12,8 @@ use crate::list::{Commit, ListError, SIFT, Sink, evaluate_pairs};
 use crate::spheres::Spheres;
 use crate::vector::Vec3;
 
-/// One pair's loads, kept by the thread that evaluated it until they are added onto the
-/// spheres in list order: working memory an engine gives
+/// One touching pair's loads, kept by the thread that evaluated it until they are added onto
+/// the spheres in list order: working memory an engine gives
 /// [`MaterialTable::evaluate_on`](crate::MaterialTable::evaluate_on), one per pair, filled
 /// with `Default::default()` (what it holds between calls is of no meaning).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -22,43 +22,44 @@ pub struct PairLoad<F> {
     torque_on_i: Vec3<F>,
     torque_on_j: Vec3<F>,
     overlap: F,
+    pair: [u32; 2],
     sliding: bool,
-    touching: bool,
 }
 
-/// A piece's pairs as they are committed: each touching pair's loads kept at its place.
+/// A piece's touching pairs as they are committed: their loads one after another, in list
+/// order, from the front of the piece's share of the loads.
 pub(crate) struct PairLoads<'o, F> {
-    /// The list place of `loads[0]`.
+    /// The list place of the piece's first pair.
     offset: usize,
     loads: &'o mut [PairLoad<F>],
+    /// How many loads are kept.
+    count: usize,
     records: Option<&'o mut [Interaction<F>]>,
 }
 
 impl<F: Float> Commit<F> for PairLoads<'_, F> {
     #[inline(always)]
     fn begin_chunk(&mut self, first: usize, len: usize) {
-        let local = first - self.offset;
-        for load in &mut self.loads[local..local + len] {
-            load.touching = false;
-        }
         if let Some(records) = self.records.as_deref_mut() {
+            let local = first - self.offset;
             records[local..local + len].fill(Interaction::Apart);
         }
     }
 
     #[inline(always)]
-    fn pair(&mut self, k: usize, _: [usize; 2], c: &ContactForces<F>) {
-        let local = k - self.offset;
-        self.loads[local] = PairLoad {
+    fn pair(&mut self, k: usize, [i, j]: [usize; 2], c: &ContactForces<F>) {
+        // A piece has as many loads as pairs, so a touching pair always finds its place.
+        self.loads[self.count] = PairLoad {
             force_on_j: c.force_on_j(),
             torque_on_i: c.torque_on_i,
             torque_on_j: c.torque_on_j,
             overlap: c.overlap,
+            pair: [i as u32, j as u32],
             sliding: c.sliding,
-            touching: true,
         };
+        self.count += 1;
         if let Some(records) = self.records.as_deref_mut() {
-            records[local] = Interaction::Touching(*c);
+            records[k - self.offset] = Interaction::Touching(*c);
         }
     }
 }
@@ -109,6 +110,7 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
             loads: PairLoads {
                 offset,
                 loads: load_pieces.next()?,
+                count: 0,
                 records: record_pieces.as_mut().and_then(Iterator::next),
             },
             outcome: Ok(0),
@@ -154,9 +156,15 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
         .flatten()
         .map(|piece| piece.outcome.as_ref().map_or(0, |&count| count))
         .sum();
-    for (&[i, j], load) in pairs.iter().zip(loads.iter()) {
-        if load.touching {
-            let pair = [i as usize, j as usize];
+    // Each piece's loads start at its first pair's place (the loads are cut as the pairs are).
+    let kept: [(usize, usize); MAX_PIECES] = array::from_fn(|p| {
+        pieces[p]
+            .as_ref()
+            .map_or((0, 0), |piece| (piece.offset, piece.loads.count))
+    });
+    for &(offset, count) in &kept {
+        for load in &loads[offset..offset + count] {
+            let pair = load.pair.map(|x| x as usize);
             let torques = (load.force_on_j, load.torque_on_i, load.torque_on_j);
             sink.add_pair(pair, torques, (load.overlap, load.sliding));
         }
