@@ -1151,31 +1151,34 @@ fn a_chunk_tested_at_once_names_the_first_refused_pair_in_list_order() {
     };
     let pair = |pair: usize, error: ContactError| Some(ListError::Pair { pair, error });
 
-    // A non-finite result before a coincident pair in the same chunk: the non-finite one.
-    let mut m = Mixture::new(60, 5);
-    overflowing(&mut m, early);
-    let mut pairs = base.pairs.clone();
-    coincident(&mut pairs, late);
-    assert_eq!(
-        refused(&m, &pairs),
-        pair(early, ContactError::NonFiniteResult)
-    );
-    // The other way round: the coincident pair.
-    let mut m = Mixture::new(60, 5);
-    overflowing(&mut m, late);
-    let mut pairs = base.pairs.clone();
-    coincident(&mut pairs, early);
-    assert_eq!(
-        refused(&m, &pairs),
-        pair(early, ContactError::CoincidentCentres)
-    );
-    // A non-finite result alone, found by the chunk's test, in the second chunk.
-    let mut m = Mixture::new(60, 5);
-    overflowing(&mut m, next_chunk);
-    assert_eq!(
-        refused(&m, &base.pairs),
-        pair(next_chunk, ContactError::NonFiniteResult)
-    );
+    // A non-finite result before a coincident pair in the same chunk: the non-finite one; the
+    // other way round: the coincident pair; a non-finite result alone, found by the chunk's
+    // test, in the second chunk.
+    for (overflows, coincides, first) in [
+        (
+            early,
+            Some(late),
+            pair(early, ContactError::NonFiniteResult),
+        ),
+        (
+            late,
+            Some(early),
+            pair(early, ContactError::CoincidentCentres),
+        ),
+        (
+            next_chunk,
+            None,
+            pair(next_chunk, ContactError::NonFiniteResult),
+        ),
+    ] {
+        let mut m = Mixture::new(60, 5);
+        overflowing(&mut m, overflows);
+        let mut pairs = base.pairs.clone();
+        if let Some(k) = coincides {
+            coincident(&mut pairs, k);
+        }
+        assert_eq!(refused(&m, &pairs), first);
+    }
 
     // Finite results whose sum overflows: one sphere sliding past all its neighbours at
     // 1e308 m/s. Accepted, with the one-contact path's bits.

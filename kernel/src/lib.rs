@@ -124,8 +124,9 @@
 //! - **Whole lists are one contact at a time.** [`MaterialTable::evaluate`] gives each contact
 //!   of a list the one-contact bits with its pair of materials' law, adds the forces in list
 //!   order, and on an error puts every state and force back and names the sphere, pair or wall;
-//!   [`MaterialTable::time_step`] checks the step against every pair of materials present.
-//!   (`material_list.rs`)
+//!   [`MaterialTable::time_step`] checks the step against every pair of materials present;
+//!   [`MaterialTable::evaluate_on`] spreads the pairs over a caller's [`Executor`]'s threads
+//!   with the same bits, states, records and errors. (`material_list.rs`)
 //! - **Rest.** A sphere resting on a plate for 10^6 steps does not drift or gain energy; a stored
 //!   spring holds a sphere on an incline below the friction angle, the stateless law lets it creep
 //!   (1 mm/s at 20 degrees, `mu` = 0.5). (`stress.rs`)
@@ -165,6 +166,9 @@
 //! [`MaterialTable::evaluate`] takes an engine's own spheres (as arrays, [`SphereArrays`], or one
 //! array of checked spheres, [`SphereSlice`]), its pair list with any periodic shifts and its
 //! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
+//! An engine with threads implements [`Executor`] and calls [`MaterialTable::evaluate_on`] with
+//! one [`PairLoad`] per pair as working memory: stretches of the list are evaluated on its
+//! threads and their loads added in list order on one, so the sums are the one-thread bits.
 //! [`ContactLaw::stored_energy`] says what a contact's springs hold, for energy accounts.
 //!
 //! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `WIDTH` pairs given as
@@ -236,6 +240,7 @@ pub use body::{Sphere, Wall, effective_mass};
 pub use checked::CheckedSphere;
 pub use engine::{BoundLaw, Law};
 pub use error::{ContactError, Parameter, ParameterError};
+pub use executor::{Executor, Serial};
 pub use float::Float;
 pub use geometry::LeverArm;
 pub use law::{ContactForces, ContactLaw, Interaction};

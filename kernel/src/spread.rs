@@ -165,8 +165,8 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
     for &(offset, count) in &kept {
         for load in &loads[offset..offset + count] {
             let pair = load.pair.map(|x| x as usize);
-            let torques = (load.force_on_j, load.torque_on_i, load.torque_on_j);
-            sink.add_pair(pair, torques, (load.overlap, load.sliding));
+            let forces = (load.force_on_j, load.torque_on_i, load.torque_on_j);
+            sink.add_pair(pair, forces, (load.overlap, load.sliding));
         }
     }
     Ok(unstable)
