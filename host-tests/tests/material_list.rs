@@ -1389,3 +1389,74 @@ fn loads_of_another_length_are_refused() {
     );
     assert_eq!(refused, Err(ListError::Length(ListArray::Loads)));
 }
+
+#[test]
+fn an_accurate_step_is_checked_against_every_material_pair_and_wall_present() {
+    let t = table();
+    let m = Mixture::new(30, 11);
+    // Glass and rubber spheres only; steel is a floor's material.
+    let two: Vec<u32> = m.material.iter().map(|&k| k.min(1)).collect();
+    let spheres = SphereArrays {
+        material: &two,
+        ..m.arrays()
+    };
+    let lightest = |material: u32| {
+        m.mass
+            .iter()
+            .zip(&two)
+            .filter(|(_, k)| **k == material)
+            .map(|(&mass, _)| mass)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let pair = |a: u32, b: u32| {
+        let law = t.law(a as usize, b as usize).unwrap();
+        law.accurate_time_step(effective_mass(lightest(a), lightest(b)))
+    };
+    let wall = |a: u32, w: u32| {
+        let law = t.law(a as usize, w as usize).unwrap();
+        law.accurate_time_step(lightest(a))
+    };
+    let pairs = [(0, 0), (0, 1), (1, 1)];
+    let (smallest, stiffest) =
+        pairs
+            .iter()
+            .map(|&(a, b)| (pair(a, b), [a, b]))
+            .fold(
+                (f64::INFINITY, [0, 0]),
+                |k, p| if p.0 < k.0 { p } else { k },
+            );
+    // Accurate steps lie well inside the stable ones.
+    assert!(t.time_step(1.5 * smallest, &spheres, &[]).is_ok());
+    let step = t.accurate_step(0.999 * smallest, &spheres, &[]).unwrap();
+    assert!(
+        step.is_accurate()
+            && !t
+                .time_step(step.seconds(), &spheres, &[])
+                .unwrap()
+                .is_accurate()
+    );
+    match t.accurate_step(1.001 * smallest, &spheres, &[]) {
+        Err(ListError::TimeStep {
+            materials,
+            error: ParameterError::TimeStepInaccurate { limit, .. },
+        }) => {
+            assert_eq!(materials, stiffest);
+            assert_eq!(limit, smallest);
+        }
+        other => panic!("expected TimeStepInaccurate, got {other:?}"),
+    }
+    // A steel floor's accurate step is smaller still: checked too, naming the wall's material.
+    let floor = (0..2u32).map(|a| wall(a, 2)).fold(f64::INFINITY, f64::min);
+    assert!(floor < smallest);
+    assert!(
+        t.accurate_step(0.999 * floor, &spheres, &[floor_of(2)])
+            .is_ok()
+    );
+    assert!(matches!(
+        t.accurate_step(1.001 * floor, &spheres, &[floor_of(2)]),
+        Err(ListError::TimeStep {
+            materials: [_, 2],
+            error: ParameterError::TimeStepInaccurate { .. }
+        })
+    ));
+}

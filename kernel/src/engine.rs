@@ -81,14 +81,26 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         smallest_effective_mass: Self::Float,
     ) -> Result<TimeStep<Self::Float>, ParameterError>;
 
+    /// Checks a time step for accuracy; see
+    /// [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step).
+    ///
+    /// # Errors
+    /// As [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step).
+    fn accurate_step(
+        &self,
+        seconds: Self::Float,
+        smallest_effective_mass: Self::Float,
+    ) -> Result<TimeStep<Self::Float>, ParameterError>;
+
     /// See [`ContactLaw::recommended_time_step`](crate::ContactLaw::recommended_time_step).
     fn recommended_time_step(&self, effective_mass: Self::Float) -> Self::Float;
 
     /// `(phi / dt)^2`: the squared normal frequency `w0^2` below which a contact is within
-    /// `time_step`'s stability limit, `phi` being
-    /// [`ContactLaw::stable_phase`](crate::ContactLaw::stable_phase). A [`BoundLaw`] derives it
+    /// `time_step`'s limit, `phi` being
+    /// [`ContactLaw::stable_phase`](crate::ContactLaw::stable_phase) (for an accurate step,
+    /// [`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase)). A [`BoundLaw`] derives it
     /// once, so each contact's check is a product and a comparison.
-    fn stable_rate_squared(&self, time_step: TimeStep<Self::Float>) -> Self::Float;
+    fn allowed_rate_squared(&self, time_step: TimeStep<Self::Float>) -> Self::Float;
 
     /// See [`ContactLaw::contact_duration`](crate::ContactLaw::contact_duration).
     fn contact_duration(&self, effective_mass: Self::Float) -> Self::Float;
@@ -168,7 +180,7 @@ pub struct BoundLaw<L: Law> {
     // The fields are the crate's so that an evaluation can borrow the law and the memos apart.
     pub(crate) law: L,
     pub(crate) time_step: TimeStep<L::Float>,
-    /// The step's [`Law::stable_rate_squared`], derived once.
+    /// The step's [`Law::allowed_rate_squared`], derived once.
     pub(crate) allowed: L::Float,
     pub(crate) pair: Memo<[L::Float; 2], PairOscillator<L::Float>>,
     pub(crate) wall: Memo<L::Float, NormalOscillator<L::Float>>,
@@ -203,7 +215,7 @@ impl<L: Law> BoundLaw<L> {
         Self {
             law,
             time_step,
-            allowed: law.stable_rate_squared(time_step),
+            allowed: law.allowed_rate_squared(time_step),
             pair: Memo {
                 key: [<L::Float as Float>::ZERO; 2],
                 value: (NormalOscillator::default(), <L::Float as Float>::ZERO),

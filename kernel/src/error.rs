@@ -73,6 +73,17 @@ pub enum ParameterError {
         /// The largest stable step for this law and mass.
         limit: f64,
     },
+    /// The time step is stable but at or past the law's accuracy limit for the smallest
+    /// effective mass the caller declared: a contact could rebound more than 0.02 of its impact
+    /// speed off the law's restitution ([`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase)).
+    /// `limit` is that bound in seconds. [`ContactLaw::time_step`](crate::ContactLaw::time_step),
+    /// which checks stability only, takes such a step.
+    TimeStepInaccurate {
+        /// The requested step.
+        time_step: f64,
+        /// The largest accurate step for this law and mass.
+        limit: f64,
+    },
 }
 
 impl fmt::Display for ParameterError {
@@ -90,6 +101,11 @@ impl fmt::Display for ParameterError {
             Self::TimeStepUnstable { time_step, limit } => write!(
                 f,
                 "time step {time_step:e} s is not below the stability limit {limit:e} s"
+            ),
+            Self::TimeStepInaccurate { time_step, limit } => write!(
+                f,
+                "time step {time_step:e} s is not below the accuracy limit {limit:e} s \
+                 (contacts could rebound faster than their restitution allows)"
             ),
         }
     }
@@ -116,7 +132,9 @@ pub enum ContactError {
     HistoryFull,
     /// The contact is stiffer than its time step was checked for: a pair lighter than the mass
     /// the step was checked against, or a [`Hertz`](crate::Hertz) overlap past the one of the
-    /// declared impact. Explicit integration of it would be unstable and could create energy.
+    /// declared impact. Explicit integration of it would be unstable and could create energy
+    /// (for a step made by [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step): it
+    /// is past the law's accuracy limit, and could rebound faster than its restitution allows).
     /// (A step that [tolerates](crate::TimeStep::tolerating_unstable_contacts) such contacts
     /// evaluates and counts them instead.)
     PastStableStep,
@@ -132,7 +150,7 @@ impl fmt::Display for ContactError {
             Self::NonFiniteResult => "the contact force overflowed",
             Self::HistoryFull => "the contact-history store is full",
             Self::PastStableStep => {
-                "the contact is stiffer than its time step was checked for (unstable)"
+                "the contact is stiffer than its time step was checked for (unstable or, for an accurate step, inaccurate)"
             }
         };
         f.write_str(text)

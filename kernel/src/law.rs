@@ -10,7 +10,7 @@ use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
-use crate::normal::{NormalModel, NormalOscillator};
+use crate::normal::{Accuracy, NormalModel, NormalOscillator, accurate_phase};
 use crate::rolling::{NoRolling, RollingInput, RollingModel};
 use crate::rotation::{NonRotating, Rotating, Rotation};
 use crate::tangential::{ContactState, TangentialInput, TangentialModel};
@@ -64,6 +64,9 @@ pub struct ContactLaw<
     /// The largest phase `w0 dt` (rad) that a step may advance a contact's normal oscillator by
     /// and keep its normal and tangential modes stable (see [`ContactLaw::stable_phase`]).
     stable_phase: F,
+    /// The normal law's accuracy limit (see [`ContactLaw::accurate_phase`]), before the
+    /// stability limit is taken into account.
+    normal_accuracy: Accuracy<F>,
     slots: Slots<F, M, R>,
 }
 
@@ -190,6 +193,7 @@ impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
             rolling: NoRolling,
             lever_arm: LeverArm::Radius,
             stable_phase: stable_phase(&normal, &tangential, Rotating::ROTATES),
+            normal_accuracy: accurate_phase(&normal),
             slots: PhantomData,
         }
     }
@@ -234,6 +238,7 @@ where
             rolling: self.rolling,
             lever_arm: self.lever_arm,
             stable_phase: self.stable_phase,
+            normal_accuracy: self.normal_accuracy,
             slots: PhantomData,
         }
     }
@@ -246,6 +251,7 @@ where
             rolling: self.rolling,
             lever_arm: self.lever_arm,
             stable_phase: stable_phase(&self.normal, &self.tangential, NonRotating::ROTATES),
+            normal_accuracy: self.normal_accuracy,
             slots: PhantomData,
         }
     }
@@ -259,6 +265,7 @@ where
             rolling,
             lever_arm: self.lever_arm,
             stable_phase: self.stable_phase,
+            normal_accuracy: self.normal_accuracy,
             slots: PhantomData,
         }
     }
@@ -297,6 +304,20 @@ where
     /// its limit is checked by [`ContactLaw::time_step`]).
     pub fn stable_phase(&self) -> F {
         self.stable_phase
+    }
+
+    /// The largest phase `w0 dt` (rad) a step may advance a contact's normal oscillator by and
+    /// still give the law's rebound: a head-on impact first seen at any phase of its step
+    /// rebounds at most 0.02 (of its impact speed) above the rebound at a vanishing step.
+    /// Derived from the integrators' discrete map when the law is built (`docs/physics.md`, the
+    /// accuracy limit), and never past [`ContactLaw::stable_phase`]. Every evaluation checks
+    /// its contact against it ([`ContactError::PastStableStep`]), `w0` its tangent stiffness's
+    /// frequency; [`ContactLaw::accurate_step`] accepts steps up to
+    /// [`ContactLaw::accurate_time_step`], for a [`Hertz`](crate::Hertz) law a little less (its
+    /// stepped impacts overshoot the declared impact's peak overlap, and this phase allows for
+    /// it).
+    pub fn accurate_phase(&self) -> F {
+        self.normal_accuracy.contact.min_of(self.stable_phase)
     }
 
     /// The elastic energy a touching contact holds (J): its normal spring at `overlap` for
@@ -340,6 +361,19 @@ where
             .min_of(self.rolling.critical_time_step())
     }
 
+    /// The largest accurate time step for contacts with this effective mass: the step at which
+    /// the declared contact (for [`Hertz`](crate::Hertz), the declared impact's peak) advances
+    /// by [`ContactLaw::accurate_phase`], and never more than
+    /// [`ContactLaw::critical_time_step`].
+    pub fn accurate_time_step(&self, effective_mass: F) -> F {
+        let frequency = self
+            .normal
+            .design_contact(effective_mass)
+            .oscillator
+            .natural_frequency;
+        (self.normal_accuracy.design / frequency).min_of(self.critical_time_step(effective_mass))
+    }
+
     /// A step of 1/50 of the contact duration (MFiX's default), and never more than a fifth of
     /// [`ContactLaw::critical_time_step`]: a stiff tangential spring (`k_t/k_n` near 10 with
     /// rotation) or the stateless law's stick-phase dashpot at low restitution can be faster than
@@ -363,7 +397,9 @@ where
 
     /// Checks a time step for a scene whose lightest contact has effective mass
     /// `smallest_effective_mass` (for equal spheres of mass m: m/2 between spheres, m against a
-    /// wall).
+    /// wall), for stability: every contact is checked against [`ContactLaw::stable_phase`].
+    /// Below the stability limit a contact resolved in a few steps can still rebound faster than
+    /// it came; [`ContactLaw::accurate_step`] checks for accuracy instead.
     ///
     /// # Errors
     /// [`ParameterError::NonFinite`] / [`ParameterError::NotPositive`] for the step or the mass;
@@ -382,6 +418,32 @@ where
         } else {
             Err(ParameterError::TimeStepUnstable {
                 time_step: seconds.to_f64(),
+                limit: limit.to_f64(),
+            })
+        }
+    }
+
+    /// Checks a time step for accuracy: as [`ContactLaw::time_step`], and below
+    /// [`ContactLaw::accurate_time_step`]; every contact evaluated with it is checked against
+    /// [`ContactLaw::accurate_phase`] ([`ContactError::PastStableStep`] past it). No head-on
+    /// impact stepped with it, at any phase, rebounds more than 0.02 of its impact speed above
+    /// the law's restitution.
+    ///
+    /// # Errors
+    /// As [`ContactLaw::time_step`]; [`ParameterError::TimeStepInaccurate`] when the step is
+    /// stable but at or past [`ContactLaw::accurate_time_step`].
+    pub fn accurate_step(
+        &self,
+        seconds: F,
+        smallest_effective_mass: F,
+    ) -> Result<TimeStep<F>, ParameterError> {
+        let step = self.time_step(seconds, smallest_effective_mass)?;
+        let limit = self.accurate_time_step(smallest_effective_mass);
+        if step.seconds() < limit {
+            Ok(TimeStep::accurate(step.seconds()))
+        } else {
+            Err(ParameterError::TimeStepInaccurate {
+                time_step: step.seconds().to_f64(),
                 limit: limit.to_f64(),
             })
         }
@@ -417,7 +479,7 @@ where
             let mass = effective_mass(i.mass, j.mass);
             (self.normal.oscillator::<M>(mass), mass)
         };
-        let allowed = self.stable_rate_squared(time_step);
+        let allowed = self.allowed_rate_squared(time_step);
         Ok(self
             .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
             .0)
@@ -440,7 +502,7 @@ where
         checked::check(sphere)?;
         let frame = geometry::sphere_wall(sphere, wall, self.lever_arm);
         let oscillator = || (self.normal.oscillator::<M>(sphere.mass), sphere.mass);
-        let allowed = self.stable_rate_squared(time_step);
+        let allowed = self.allowed_rate_squared(time_step);
         Ok(self
             .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
             .0)
@@ -455,7 +517,7 @@ where
 
     /// The outcome for an overlap (`Some` frame) or none, and whether it was a contact past the
     /// stable step that the step tolerates. `allowed` is the step's
-    /// [`stable_rate_squared`](Self::stable_rate_squared), derived once per step by a bound law.
+    /// [`allowed_rate_squared`](Self::allowed_rate_squared), derived once per step by a bound law.
     /// With `FINITE` false the forces and the new state are not tested for finiteness: the
     /// caller tests them ([`Law::evaluate_pair_deferred`]).
     #[inline(always)]
@@ -488,11 +550,18 @@ where
         }
     }
 
-    /// `(phi / dt)^2`, the squared frequency the step allows: one division per step, which a
-    /// bound law makes once ([`BoundLaw`]) rather than at every contact.
+    /// `(phi / dt)^2`, the squared frequency the step allows, `phi` the
+    /// [`stable_phase`](Self::stable_phase) or, for an [accurate](TimeStep::is_accurate) step,
+    /// the [`accurate_phase`](Self::accurate_phase): one division per step, which a bound law
+    /// makes once ([`BoundLaw`]) rather than at every contact.
     #[inline(always)]
-    pub(crate) fn stable_rate_squared(&self, time_step: TimeStep<F>) -> F {
-        let rate = self.stable_phase / time_step.seconds();
+    pub(crate) fn allowed_rate_squared(&self, time_step: TimeStep<F>) -> F {
+        let phase = if time_step.is_accurate() {
+            self.accurate_phase()
+        } else {
+            self.stable_phase
+        };
+        let rate = phase / time_step.seconds();
         rate * rate
     }
 
@@ -630,12 +699,20 @@ where
         ContactLaw::time_step(self, seconds, smallest_effective_mass)
     }
 
+    fn accurate_step(
+        &self,
+        seconds: F,
+        smallest_effective_mass: F,
+    ) -> Result<TimeStep<F>, ParameterError> {
+        ContactLaw::accurate_step(self, seconds, smallest_effective_mass)
+    }
+
     fn recommended_time_step(&self, effective_mass: F) -> F {
         ContactLaw::recommended_time_step(self, effective_mass)
     }
 
-    fn stable_rate_squared(&self, time_step: TimeStep<F>) -> F {
-        ContactLaw::stable_rate_squared(self, time_step)
+    fn allowed_rate_squared(&self, time_step: TimeStep<F>) -> F {
+        ContactLaw::allowed_rate_squared(self, time_step)
     }
 
     fn contact_duration(&self, effective_mass: F) -> F {

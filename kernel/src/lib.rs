@@ -115,6 +115,11 @@
 //!   normal and tangential modes' explicit-integration limits, `dt < (2/w)(sqrt(1 + z^2) - z)`;
 //!   just below it a resting contact stays bounded, just above it it diverges; past it on purpose,
 //!   nothing non-finite leaves the kernel. (`stability.rs`, `stress.rs`)
+//! - **Accuracy limit.** [`ContactLaw::accurate_step`] refuses a stable step at which a head-on
+//!   impact, first seen at any phase of its step, could rebound more than 0.02 of its impact
+//!   speed above the law's restitution ([`ContactLaw::accurate_time_step`], derived from the
+//!   integrators' discrete map when the law is built), and checks each contact against
+//!   [`ContactLaw::accurate_phase`]. (`accuracy.rs`)
 //! - **No contact past its step goes on silently.** Every evaluation checks its contact against
 //!   the step's limit ([`ContactLaw::stable_phase`]): a pair lighter than the declared mass, a
 //!   [`Hertz`] overlap past the declared impact's, a wall law stiffer than the step's are refused

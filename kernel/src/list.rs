@@ -324,6 +324,38 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<TimeStep<L::Float>, ListError> {
+        self.step_by(seconds, spheres, walls, L::time_step)
+            .map(|()| TimeStep::checked(seconds))
+    }
+
+    /// Checks `seconds` for accuracy, as [`MaterialTable::time_step`] checks it for stability:
+    /// with [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step) for every pair of
+    /// materials present and every material with every wall's. Every contact evaluated with it
+    /// is checked against its law's [`accurate_phase`](crate::ContactLaw::accurate_phase).
+    ///
+    /// # Errors
+    /// As [`MaterialTable::time_step`], the refusing law's error being
+    /// [`ParameterError::TimeStepInaccurate`](crate::ParameterError::TimeStepInaccurate) for a
+    /// stable but inaccurate step.
+    pub fn accurate_step(
+        &self,
+        seconds: L::Float,
+        spheres: &impl Spheres<L::Float>,
+        walls: &[MaterialWall<L::Float>],
+    ) -> Result<TimeStep<L::Float>, ListError> {
+        self.step_by(seconds, spheres, walls, L::accurate_step)
+            .map(|()| TimeStep::accurate(seconds))
+    }
+
+    /// Checks `seconds` with `check` for every pair of materials present and every material
+    /// with every wall's (see [`MaterialTable::time_step`]).
+    fn step_by(
+        &self,
+        seconds: L::Float,
+        spheres: &impl Spheres<L::Float>,
+        walls: &[MaterialWall<L::Float>],
+        check: impl Fn(&L, L::Float, L::Float) -> Result<TimeStep<L::Float>, ParameterError>,
+    ) -> Result<(), ListError> {
         let lightest = check_spheres::<_, MATERIALS>(spheres)?;
         check_walls::<_, MATERIALS>(walls)?;
         let refused = |a: usize, b: usize| {
@@ -338,18 +370,15 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             let Some(mass_a) = *mass_a else { continue };
             for (b, mass_b) in lightest.iter().enumerate().skip(a) {
                 let Some(mass_b) = *mass_b else { continue };
-                laws[a][b]
-                    .time_step(seconds, effective_mass(mass_a, mass_b))
+                check(&laws[a][b], seconds, effective_mass(mass_a, mass_b))
                     .map_err(refused(a, b))?;
             }
             for wall in walls {
                 let w = wall.material as usize;
-                laws[a][w]
-                    .time_step(seconds, mass_a)
-                    .map_err(refused(a, w))?;
+                check(&laws[a][w], seconds, mass_a).map_err(refused(a, w))?;
             }
         }
-        Ok(TimeStep::checked(seconds))
+        Ok(())
     }
 
     /// The largest step every law present recommends ([`ContactLaw::recommended_time_step`](crate::ContactLaw::recommended_time_step))

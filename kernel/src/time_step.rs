@@ -15,6 +15,7 @@ use crate::float::Float;
 pub struct TimeStep<F> {
     seconds: F,
     tolerate: bool,
+    accurate: bool,
 }
 
 impl<F: Float> TimeStep<F> {
@@ -22,7 +23,26 @@ impl<F: Float> TimeStep<F> {
         Self {
             seconds,
             tolerate: false,
+            accurate: false,
         }
+    }
+
+    /// A step checked against the accuracy limit: its contacts are checked against the law's
+    /// [`accurate_phase`](crate::ContactLaw::accurate_phase).
+    pub(crate) fn accurate(seconds: F) -> Self {
+        Self {
+            accurate: true,
+            ..Self::checked(seconds)
+        }
+    }
+
+    /// Whether the step was checked for accuracy ([`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step)),
+    /// so that each contact is checked against the law's
+    /// [`accurate_phase`](crate::ContactLaw::accurate_phase) rather than its
+    /// [`stable_phase`](crate::ContactLaw::stable_phase).
+    #[inline(always)]
+    pub fn is_accurate(self) -> bool {
+        self.accurate
     }
 
     /// The step in seconds.

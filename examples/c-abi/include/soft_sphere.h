@@ -91,6 +91,12 @@
 #define SS_ERR_PAST_STABLE_STEP 15
 
 /**
+ * The time step is stable but at or past the law's accuracy limit: a contact could rebound
+ * more than 0.02 of its impact speed off the law's restitution.
+ */
+#define SS_ERR_INACCURATE_TIME_STEP 16
+
+/**
  * The stateless (simplified) law: no tangential history is read or written.
  */
 #define SS_MODEL_STATELESS 0
@@ -763,7 +769,8 @@ typedef struct {
    */
   int32_t parameter;
   /**
-   * For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+   * For `SS_ERR_UNSTABLE_TIME_STEP` (`SS_ERR_INACCURATE_TIME_STEP`): the pair's largest stable
+   * (accurate) step (s).
    */
   double limit;
 } ss_table_report_f64;
@@ -1367,7 +1374,8 @@ typedef struct {
    */
   int32_t parameter;
   /**
-   * For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+   * For `SS_ERR_UNSTABLE_TIME_STEP` (`SS_ERR_INACCURATE_TIME_STEP`): the pair's largest stable
+   * (accurate) step (s).
    */
   float limit;
 } ss_table_report_f32;

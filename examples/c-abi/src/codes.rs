@@ -36,6 +36,9 @@ pub const SS_ERR_POISSON_RATIO: i32 = 14;
 /// The contact is stiffer than the time step was checked for (a pair lighter than the declared
 /// mass, a Hertz overlap past the declared impact's): explicit integration would be unstable.
 pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
+/// The time step is stable but at or past the law's accuracy limit: a contact could rebound
+/// more than 0.02 of its impact speed off the law's restitution.
+pub const SS_ERR_INACCURATE_TIME_STEP: i32 = 16;
 
 // The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_MICROSLIP: registry.rs's list.
 /// Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.
@@ -89,7 +92,9 @@ pub(crate) fn rejected_parameter(error: ParameterError) -> i32 {
         ParameterError::RestitutionOutOfRange | ParameterError::ReboundUnreachable { .. } => {
             Parameter::Restitution
         }
-        ParameterError::TimeStepUnstable { .. } => Parameter::TimeStep,
+        ParameterError::TimeStepUnstable { .. } | ParameterError::TimeStepInaccurate { .. } => {
+            Parameter::TimeStep
+        }
         ParameterError::PoissonRatioOutOfRange => Parameter::PoissonRatio,
     };
     match parameter {
@@ -122,6 +127,7 @@ pub(crate) fn parameter_code(error: ParameterError) -> i32 {
             SS_ERR_RESTITUTION
         }
         ParameterError::TimeStepUnstable { .. } => SS_ERR_UNSTABLE_TIME_STEP,
+        ParameterError::TimeStepInaccurate { .. } => SS_ERR_INACCURATE_TIME_STEP,
         ParameterError::PoissonRatioOutOfRange => SS_ERR_POISSON_RATIO,
     }
 }

@@ -108,6 +108,7 @@ pub extern "C" fn ss_parameter_error_text(code: i32) -> *const c_char {
         SS_ERR_RESTITUTION => b"must lie in [0, 1]\0",
         SS_ERR_POISSON_RATIO => b"must lie in (-1, 0.5]\0",
         SS_ERR_UNSTABLE_TIME_STEP => b"is at or past the stability limit\0",
+        SS_ERR_INACCURATE_TIME_STEP => b"is at or past the accuracy limit\0",
         SS_ERR_UNKNOWN_MODEL => b"is not one the kernel knows\0",
         _ => b"is invalid\0",
     })

@@ -101,7 +101,8 @@ pub struct ss_table_report<F> {
     pub materials: [i64; 2],
     /// `SS_PARAMETER_*` the error is about.
     pub parameter: i32,
-    /// For `SS_ERR_UNSTABLE_TIME_STEP`: the pair's largest stable step (s).
+    /// For `SS_ERR_UNSTABLE_TIME_STEP` (`SS_ERR_INACCURATE_TIME_STEP`): the pair's largest stable
+    /// (accurate) step (s).
     pub limit: F,
 }
 
@@ -558,7 +559,9 @@ where
             Err(ListError::TimeStep { materials, error }) => {
                 report.materials = materials.map(i64::from);
                 report.parameter = rejected_parameter(error);
-                if let ParameterError::TimeStepUnstable { limit, .. } = error {
+                if let ParameterError::TimeStepUnstable { limit, .. }
+                | ParameterError::TimeStepInaccurate { limit, .. } = error
+                {
                     report.limit = F::from_f64(limit);
                 }
                 return parameter_code(error);

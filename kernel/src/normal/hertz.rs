@@ -279,6 +279,10 @@ impl<F: Float> NormalModel<F> for Hertz<F> {
         self.contact::<F::DefaultBackend>(overlap, F::ZERO, self.largest.effective_radius, &unit)
     }
 
+    fn design_impact(&self) -> (F, F) {
+        (self.largest.speed, self.largest.effective_radius)
+    }
+
     /// `duration_factor (m* v^2 / K)^(2/5) / v` with `K = (4/3) E* sqrt(R*)`: for `e = 1`,
     /// `2.868 (m*^2 / (R* E*^2 v))^(1/5)`.
     fn contact_duration(&self, effective_mass: F) -> F {

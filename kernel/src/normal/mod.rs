@@ -6,8 +6,11 @@
 //! | [`LinearSpring`] | `k_n delta` | none | 1 |
 //! | [`Hertz`] | `(4/3) E* sqrt(R*) delta^(3/2)` | `alpha sqrt(m* (4/3) E* a)`, grows as `delta^(1/4)` (Tsuji et al. 1992) | exactly `e` at any impact speed |
 
+mod accuracy;
 mod hertz;
 mod linear;
+
+pub(crate) use accuracy::{Accuracy, accurate_phase};
 
 pub use hertz::{Hertz, HertzImpact};
 pub use linear::{LinearSpring, LinearSpringDashpot};
@@ -99,6 +102,14 @@ pub trait NormalModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// follow: a linear law's only oscillator; for [`Hertz`], the contact at the peak overlap of
     /// its declared largest impact.
     fn design_contact(&self, effective_mass: F) -> NormalContact<F>;
+
+    /// The approach speed (m/s) and effective radius (m) of the impact the law is declared for:
+    /// [`Hertz`]'s largest impact. A linear law is the same at every speed and size and keeps
+    /// the default of ones. The accuracy limit ([`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase))
+    /// is scanned at this impact.
+    fn design_impact(&self) -> (F, F) {
+        (F::ONE, F::ONE)
+    }
 
     /// How long a binary impact carries normal force (s): from first touch until the force ends.
     /// Infinite when it never ends (critical damping without the attraction clamp). For
