@@ -1,9 +1,9 @@
-//! Every step `accurate_step` accepts is accurate (docs/physics.md, the accuracy limit): a head-on
+//! Every step `time_step` accepts is accurate (docs/physics.md, the accuracy limit): a head-on
 //! wall impact first seen at any of 16 phases of its step rebounds within 0.02 of the law's
 //! restitution, for the linear law (e 0.3 to 1, free and clamped) and for Hertz at its declared
 //! impact speed; faster Hertz impacts and stiffer walls are refused or accurate. Steps below the
-//! stability limit that create energy (up to twice the impact speed), which `time_step` accepts,
-//! are refused.
+//! stability limit that create energy (up to twice the impact speed) are refused unless asked
+//! for with `coarse_time_step`.
 
 use host_tests::impact::{Integrator, floor, incoming_sphere, wall_impact_with};
 use soft_sphere::{
@@ -66,7 +66,7 @@ fn check_accurate<N: NormalModel<f64>>(
     let limit = law.accurate_time_step(m);
     for fraction in FRACTIONS {
         let dt = law
-            .accurate_step(fraction * limit, m)
+            .time_step(fraction * limit, m)
             .expect("below the accurate step");
         let rebounds = rebounds(&law, SPEED, dt).expect("an impact at the declared speed");
         let worst = rebounds
@@ -131,7 +131,7 @@ fn hertz_impacts_three_times_faster_than_declared_are_refused_or_accurate() {
         let law = hertz(e);
         let limit = law.accurate_time_step(m);
         for fraction in FRACTIONS {
-            let dt = law.accurate_step(fraction * limit, m).unwrap();
+            let dt = law.time_step(fraction * limit, m).unwrap();
             match rebounds(&law, 3.0 * SPEED, dt) {
                 Ok(rebounds) => {
                     for r in rebounds {
@@ -146,19 +146,19 @@ fn hertz_impacts_three_times_faster_than_declared_are_refused_or_accurate() {
 
 #[test]
 fn stable_steps_that_create_energy_are_refused() {
-    // Linear e = 0.7 at 0.9 of the stability limit: stable, so `time_step` takes it, and its
-    // impacts rebound faster than they came.
+    // Linear e = 0.7 at 0.9 of the stability limit: stable, so `coarse_time_step` takes it, and
+    // its impacts rebound faster than they came.
     let m = mass();
     let law = ContactLaw::new(LinearSpringDashpot::new(1000.0, 0.7).unwrap(), Frictionless);
     let coarse = 0.9 * law.critical_time_step(m);
-    let dt = law.time_step(coarse, m).unwrap();
+    let dt = law.coarse_time_step(coarse, m).unwrap();
     assert!(!dt.is_accurate());
     let worst = rebounds(&law, SPEED, dt)
         .unwrap()
         .into_iter()
         .fold(0.0f64, f64::max);
     assert!(worst > 1.0, "the stable step's worst rebound {worst}");
-    match law.accurate_step(coarse, m) {
+    match law.time_step(coarse, m) {
         Err(ParameterError::TimeStepInaccurate { time_step, limit }) => {
             assert_eq!(time_step, coarse);
             assert_eq!(limit, law.accurate_time_step(m));
@@ -169,13 +169,11 @@ fn stable_steps_that_create_energy_are_refused() {
     // Past the stability limit it is refused as unstable.
     let unstable = 1.01 * law.critical_time_step(m);
     assert!(matches!(
-        law.accurate_step(unstable, m),
+        law.time_step(unstable, m),
         Err(ParameterError::TimeStepUnstable { .. })
     ));
     // With an accurate step, a lighter contact than declared is refused at evaluation.
-    let dt = law
-        .accurate_step(0.9 * law.accurate_time_step(m), m)
-        .unwrap();
+    let dt = law.time_step(0.9 * law.accurate_time_step(m), m).unwrap();
     let lighter = incoming_sphere::<f64>(RADIUS / 2.0, DENSITY, SPEED, 0.0);
     let out = wall_impact_with(
         Integrator::SymplecticEuler,
@@ -197,15 +195,13 @@ fn a_wall_much_stiffer_than_the_checked_law_is_refused() {
     let m = mass();
     let pair = ContactLaw::new(LinearSpringDashpot::new(1000.0, 0.7).unwrap(), Frictionless);
     let wall = ContactLaw::new(LinearSpringDashpot::new(1.0e6, 0.7).unwrap(), Frictionless);
-    let dt = pair
-        .accurate_step(pair.recommended_time_step(m), m)
-        .unwrap();
+    let dt = pair.time_step(pair.recommended_time_step(m), m).unwrap();
     assert_eq!(
         rebounds(&wall, SPEED, dt).unwrap_err(),
         ContactError::PastStableStep
     );
     assert!(matches!(
-        wall.accurate_step(dt.seconds(), m),
+        wall.time_step(dt.seconds(), m),
         Err(ParameterError::TimeStepInaccurate { .. } | ParameterError::TimeStepUnstable { .. })
     ));
 }
@@ -216,10 +212,10 @@ fn the_recommended_step_is_accurate_for_every_restitution() {
     for e in [0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0] {
         let law = ContactLaw::new(LinearSpringDashpot::new(1000.0, e).unwrap(), Frictionless);
         let recommended = law.recommended_time_step(m);
-        assert!(law.accurate_step(recommended, m).is_ok(), "e {e}");
+        assert!(law.time_step(recommended, m).is_ok(), "e {e}");
         let law = hertz(e);
         assert!(
-            law.accurate_step(law.recommended_time_step(m), m).is_ok(),
+            law.time_step(law.recommended_time_step(m), m).is_ok(),
             "hertz e {e}"
         );
     }

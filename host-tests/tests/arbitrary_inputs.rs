@@ -98,11 +98,11 @@ fn arbitrary_spheres_and_states_give_a_contact_or_an_error() {
         MicroSlip::<f64, 4>::new(MindlinParameters::new(4e7, 0.5, 0.3).unwrap(), 1e-4).unwrap(),
     );
     let dt_linear = linear
-        .time_step(1e-6, 1e-9)
+        .coarse_time_step(1e-6, 1e-9)
         .unwrap()
         .tolerating_unstable_contacts();
     let dt_micro = micro
-        .time_step(1e-8, 1e-9)
+        .coarse_time_step(1e-8, 1e-9)
         .unwrap()
         .tolerating_unstable_contacts();
     let mut random = Xorshift::new(11);

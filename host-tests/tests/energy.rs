@@ -434,7 +434,11 @@ fn pour<L: Law<Float = f64>>(
     let input = StepInput {
         table,
         gravity: -up * setup.gravity,
-        time_step: table.law(0, 0).unwrap().time_step(dt, mass / 2.0).unwrap(),
+        time_step: table
+            .law(0, 0)
+            .unwrap()
+            .coarse_time_step(dt, mass / 2.0)
+            .unwrap(),
         integrator,
     };
     let steps = (seconds / dt) as usize;

@@ -236,10 +236,10 @@ fn the_time_steps_come_from_the_declared_impact() {
         2.0 / frequency
     );
     assert!(matches!(
-        law.time_step(limit, mass),
+        law.coarse_time_step(limit, mass),
         Err(ParameterError::TimeStepUnstable { .. })
     ));
-    assert!(law.time_step(0.999 * limit, mass).is_ok());
+    assert!(law.coarse_time_step(0.999 * limit, mass).is_ok());
     let duration = 2.868 * (mass * mass / (radius * e_star * e_star * speed)).powf(0.2);
     assert!((law.contact_duration(mass) / duration - 1.0).abs() < 1e-3);
     assert!(law.recommended_time_step(mass) <= law.contact_duration(mass) / 50.0);
@@ -678,7 +678,7 @@ fn pressed_oscillation(restitution: f64, fraction: f64, steps: usize) -> f64 {
     let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, radius - 1.01 * peak), radius, density);
     let limit = law.critical_time_step(mass);
     let dt = law
-        .time_step(fraction * limit, 4.0 * mass)
+        .coarse_time_step(fraction * limit, 4.0 * mass)
         .unwrap()
         .tolerating_unstable_contacts();
     let mut worst = 0.0f64;

@@ -300,7 +300,7 @@ fn mixture_bits(route: Route) {
         wall(Vec3::new(0.0, 0.0, 1.0e-3), Vec3::new(0.0, 0.0, 1.0), 2),
         wall(Vec3::new(-0.6e-3, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), 1),
     ];
-    let dt = t.time_step(2.0e-6, &m.arrays(), &walls).unwrap();
+    let dt = t.coarse_time_step(2.0e-6, &m.arrays(), &walls).unwrap();
     let n = m.position.len();
     let mut states = vec![State::default(); m.pairs.len()];
     let mut wall_states = vec![State::default(); n * walls.len()];
@@ -467,7 +467,7 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     let t = table();
     let m = Mixture::new(20, 3);
     let walls = [floor_of(2)];
-    let dt = t.time_step(1.0e-6, &m.arrays(), &walls).unwrap();
+    let dt = t.coarse_time_step(1.0e-6, &m.arrays(), &walls).unwrap();
     assert_eq!(try_evaluate(&t, &m.arrays(), &m.pairs, &walls, dt), Ok(()));
     // Lengths, one array at a time.
     let short = &m.position[..19];
@@ -514,7 +514,7 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             Err(ListError::Length(array))
         );
         assert_eq!(
-            t.time_step(1.0e-6, &arrays, &walls),
+            t.coarse_time_step(1.0e-6, &arrays, &walls),
             Err(ListError::Length(array))
         );
     }
@@ -578,7 +578,10 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         material: 3,
     });
     assert_eq!(try_evaluate(&t, &arrays, &m.pairs, &walls, dt), refused);
-    assert_eq!(t.time_step(1.0e-6, &arrays, &walls).map(|_| ()), refused);
+    assert_eq!(
+        t.coarse_time_step(1.0e-6, &arrays, &walls).map(|_| ()),
+        refused
+    );
     let bad_wall = [floor_of(2), floor_of(9)];
     let refused = Err(ListError::WallMaterial {
         wall: 1,
@@ -631,7 +634,7 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     );
     // Several refused: the first in list order, whatever the materials' order in a block.
     let long = Mixture::new(60, 5);
-    let dt_long = t.time_step(1.0e-6, &long.arrays(), &walls).unwrap();
+    let dt_long = t.coarse_time_step(1.0e-6, &long.arrays(), &walls).unwrap();
     assert!(long.pairs.len() > 300, "{}", long.pairs.len());
     let mut pairs = long.pairs.clone();
     let by_material = |material: u32| (0..60u32).find(|&k| long.material[k as usize] == material);
@@ -683,8 +686,11 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     let pair_limit = t.law(0, 0).unwrap().critical_time_step(light / 2.0);
     let wall_limit = t.law(0, 2).unwrap().critical_time_step(m.mass[13]);
     assert!(wall_limit < 0.8 * pair_limit);
-    let dt = t.time_step(0.9 * pair_limit, &arrays, &[]).unwrap();
-    assert!(t.time_step(0.9 * pair_limit, &arrays, &walls).is_err());
+    let dt = t.coarse_time_step(0.9 * pair_limit, &arrays, &[]).unwrap();
+    assert!(
+        t.coarse_time_step(0.9 * pair_limit, &arrays, &walls)
+            .is_err()
+    );
     assert_eq!(
         try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
         Err(ListError::Wall {
@@ -733,8 +739,8 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
     };
     let smallest = pair_limit(0, 0).min(pair_limit(0, 1)).min(pair_limit(1, 1));
     // Just below the smallest pair limit: accepted; just above: refused, naming a pair.
-    assert!(t.time_step(0.999 * smallest, &spheres, &[]).is_ok());
-    let refused = t.time_step(1.001 * smallest, &spheres, &[]);
+    assert!(t.coarse_time_step(0.999 * smallest, &spheres, &[]).is_ok());
+    let refused = t.coarse_time_step(1.001 * smallest, &spheres, &[]);
     assert!(
         matches!(
             refused,
@@ -752,8 +758,8 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
         .fold(f64::INFINITY, f64::min);
     assert!(wall_limit < 0.85 * smallest, "{wall_limit} {smallest}");
     let step = 0.9 * smallest;
-    assert!(t.time_step(step, &spheres, &[floor_of(1)]).is_ok());
-    let refused = t.time_step(step, &spheres, &[floor_of(1), floor_of(2)]);
+    assert!(t.coarse_time_step(step, &spheres, &[floor_of(1)]).is_ok());
+    let refused = t.coarse_time_step(step, &spheres, &[floor_of(1), floor_of(2)]);
     assert!(
         matches!(
             refused,
@@ -765,11 +771,11 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
         "{refused:?}"
     );
     assert!(
-        t.time_step(0.999 * wall_limit, &spheres, &[floor_of(2)])
+        t.coarse_time_step(0.999 * wall_limit, &spheres, &[floor_of(2)])
             .is_ok()
     );
     assert!(
-        t.time_step(1.001 * wall_limit, &spheres, &[floor_of(2)])
+        t.coarse_time_step(1.001 * wall_limit, &spheres, &[floor_of(2)])
             .is_err()
     );
     // A material not present does not limit the step: rubber spheres alone, with their own
@@ -782,11 +788,17 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
     let light = m.mass.iter().copied().fold(f64::INFINITY, f64::min);
     let rubber_limit = limit(&rubber(), &rubber(), light / 2.0);
     assert!(rubber_limit > 2.0 * smallest);
-    assert!(t.time_step(0.999 * rubber_limit, &arrays, &[]).is_ok());
-    assert!(t.time_step(1.001 * rubber_limit, &arrays, &[]).is_err());
+    assert!(
+        t.coarse_time_step(0.999 * rubber_limit, &arrays, &[])
+            .is_ok()
+    );
+    assert!(
+        t.coarse_time_step(1.001 * rubber_limit, &arrays, &[])
+            .is_err()
+    );
     // A bad step is refused whatever is present; the recommended step is accepted.
     assert!(matches!(
-        t.time_step(-1.0, &spheres, &[]),
+        t.coarse_time_step(-1.0, &spheres, &[]),
         Err(ListError::TimeStep {
             error: ParameterError::NotPositive(Parameter::TimeStep),
             ..
@@ -794,7 +806,7 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
     ));
     let walls = [floor_of(2)];
     let recommended = t.recommended_time_step(&spheres, &walls).unwrap().unwrap();
-    assert!(t.time_step(recommended, &spheres, &walls).is_ok());
+    assert!(t.coarse_time_step(recommended, &spheres, &walls).is_ok());
     assert!(recommended <= 0.2 * wall_limit * 1.0001);
     let none = SphereArrays {
         position: &[],
@@ -856,7 +868,7 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
             .map(|(a, b)| t.law(a, b).unwrap().critical_time_step(m_star))
             .into_iter()
             .fold(f64::INFINITY, f64::min);
-        let step = t.time_step(0.9 * smallest, &spheres, &[])?;
+        let step = t.coarse_time_step(0.9 * smallest, &spheres, &[])?;
         let dt = step.seconds();
         let pairs = [[0u32, 1], [1, 2]];
         let mut states = [Default::default(); 2];
@@ -938,12 +950,12 @@ proptest! {
         };
         let pairs: Vec<[u32; 2]> = pair_words.iter().map(|&(i, j)| [i, j]).collect();
         let walls = [floor_of(2)];
-        let dt = t.time_step(1e-7, &SphereArrays {
+        let dt = t.coarse_time_step(1e-7, &SphereArrays {
             position: &[Vec3::ZERO], velocity: &[Vec3::ZERO], angular_velocity: &[Vec3::ZERO],
             radius: &[1e-3], mass: &[1e-5], material: &[0],
         }, &walls).unwrap();
         let _ = try_evaluate(&t, &arrays, &pairs, &walls, dt);
-        let _ = t.time_step(1e-7, &arrays, &walls);
+        let _ = t.coarse_time_step(1e-7, &arrays, &walls);
         let _ = t.recommended_time_step(&arrays, &walls);
     }
 }
@@ -962,7 +974,7 @@ fn an_empty_list_and_walls_alone_work() {
         material: &[1],
     };
     let walls = [floor_of(0)];
-    let dt = t.time_step(1.0e-6, &arrays, &walls).unwrap();
+    let dt = t.coarse_time_step(1.0e-6, &arrays, &walls).unwrap();
     let mut wall_states = [State::default()];
     let (mut force, mut torque) = ([Vec3::ZERO], [Vec3::ZERO]);
     let mut records = [Interaction::Apart];
@@ -1120,7 +1132,7 @@ fn a_chunk_tested_at_once_names_the_first_refused_pair_in_list_order() {
     let t = table();
     let base = Mixture::new(60, 5);
     assert!(base.pairs.len() > 300, "{}", base.pairs.len());
-    let dt = t.time_step(1.0e-6, &base.arrays(), &[]).unwrap();
+    let dt = t.coarse_time_step(1.0e-6, &base.arrays(), &[]).unwrap();
     let touching = |k: usize| {
         let [i, j] = base.pairs[k].map(|x| x as usize);
         let reach = base.radius[i] + base.radius[j];
@@ -1288,7 +1300,7 @@ fn pairs_spread_over_threads_give_the_one_thread_bits() {
     let light = start.mass.iter().copied().fold(f64::INFINITY, f64::min);
     let glass_limit = t.law(0, 0).unwrap().critical_time_step(light / 2.0);
     let dt = t
-        .time_step(0.9 * glass_limit, &glass, &[])
+        .coarse_time_step(0.9 * glass_limit, &glass, &[])
         .unwrap()
         .tolerating_unstable_contacts();
     for threads in [1, 2, 3] {
@@ -1376,7 +1388,7 @@ fn pairs_spread_over_threads_give_the_one_thread_bits() {
 fn loads_of_another_length_are_refused() {
     let t = table();
     let m = Mixture::new(30, 2);
-    let dt = t.time_step(1.0e-6, &m.arrays(), &[]).unwrap();
+    let dt = t.coarse_time_step(1.0e-6, &m.arrays(), &[]).unwrap();
     let pool = Threads::new(2).unwrap();
     let mut loads = vec![PairLoad::default(); m.pairs.len() + 1];
     let mut states = vec![State::default(); m.pairs.len()];
@@ -1391,7 +1403,7 @@ fn loads_of_another_length_are_refused() {
 }
 
 #[test]
-fn an_accurate_step_is_checked_against_every_material_pair_and_wall_present() {
+fn the_step_is_checked_for_accuracy_against_every_material_pair_and_wall_present() {
     let t = table();
     let m = Mixture::new(30, 11);
     // Glass and rubber spheres only; steel is a floor's material.
@@ -1426,16 +1438,11 @@ fn an_accurate_step_is_checked_against_every_material_pair_and_wall_present() {
                 |k, p| if p.0 < k.0 { p } else { k },
             );
     // Accurate steps lie well inside the stable ones.
-    assert!(t.time_step(1.5 * smallest, &spheres, &[]).is_ok());
-    let step = t.accurate_step(0.999 * smallest, &spheres, &[]).unwrap();
-    assert!(
-        step.is_accurate()
-            && !t
-                .time_step(step.seconds(), &spheres, &[])
-                .unwrap()
-                .is_accurate()
-    );
-    match t.accurate_step(1.001 * smallest, &spheres, &[]) {
+    assert!(t.coarse_time_step(1.5 * smallest, &spheres, &[]).is_ok());
+    let step = t.time_step(0.999 * smallest, &spheres, &[]).unwrap();
+    let coarse = t.coarse_time_step(step.seconds(), &spheres, &[]).unwrap();
+    assert!(step.is_accurate() && !coarse.is_accurate());
+    match t.time_step(1.001 * smallest, &spheres, &[]) {
         Err(ListError::TimeStep {
             materials,
             error: ParameterError::TimeStepInaccurate { limit, .. },
@@ -1448,12 +1455,9 @@ fn an_accurate_step_is_checked_against_every_material_pair_and_wall_present() {
     // A steel floor's accurate step is smaller still: checked too, naming the wall's material.
     let floor = (0..2u32).map(|a| wall(a, 2)).fold(f64::INFINITY, f64::min);
     assert!(floor < smallest);
-    assert!(
-        t.accurate_step(0.999 * floor, &spheres, &[floor_of(2)])
-            .is_ok()
-    );
+    assert!(t.time_step(0.999 * floor, &spheres, &[floor_of(2)]).is_ok());
     assert!(matches!(
-        t.accurate_step(1.001 * floor, &spheres, &[floor_of(2)]),
+        t.time_step(1.001 * floor, &spheres, &[floor_of(2)]),
         Err(ListError::TimeStep {
             materials: [_, 2],
             error: ParameterError::TimeStepInaccurate { .. }

@@ -1358,7 +1358,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
     let (spheres, domain) = gas(60, 5);
     let m = Sphere::solid(Vec3::ZERO, DIAMETER / 2.0, 2500.0).mass;
     let checked_for_pairs = pair_law
-        .time_step(0.5 * pair_law.critical_time_step(m / 2.0), m / 2.0)
+        .coarse_time_step(0.5 * pair_law.critical_time_step(m / 2.0), m / 2.0)
         .unwrap();
     // Kinetic plus gravitational energy.
     let energy = |scene: &OwnedScene<Linear, [MaterialWall<f64>; 1]>| {
@@ -1418,7 +1418,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         table: &table,
         gravity,
         time_step: pair_law
-            .time_step(0.99 * pair_law.critical_time_step(m), m)
+            .coarse_time_step(0.99 * pair_law.critical_time_step(m), m)
             .unwrap(),
         integrator: Integrator::SymplecticEuler,
     };
@@ -1440,7 +1440,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
     // relaxed) the pairs' law at half a sphere's mass.
     let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
     let checked = |scene: &mut OwnedScene<Linear, _>, table: &MaterialTable<Linear, 2>, dt| {
-        scene.scene(|s| s.time_step(table, dt)).unwrap()
+        scene.scene(|s| s.coarse_time_step(table, dt)).unwrap()
     };
     let refused = checked(&mut scene, &table, checked_for_pairs.seconds());
     assert!(

@@ -198,7 +198,7 @@ fn the_step_is_checked_against_the_stiffest_pair_of_materials_present() {
         });
     let mut step = |dt| {
         scene
-            .scene(|s| s.time_step(&table, dt).map(|_| ()))
+            .scene(|s| s.coarse_time_step(&table, dt).map(|_| ()))
             .unwrap()
     };
     assert_eq!(step(0.99 * limit), Ok(()));

@@ -29,7 +29,7 @@ fn resting_oscillation(restitution: f64, fraction: f64, steps: usize) -> f64 {
     );
     let limit = law.critical_time_step(mass);
     let dt = law
-        .time_step(fraction * limit, 4.0 * mass)
+        .coarse_time_step(fraction * limit, 4.0 * mass)
         .unwrap()
         .tolerating_unstable_contacts();
     let wall = floor();
@@ -87,7 +87,7 @@ fn the_stateless_law_chatters_past_its_tangential_limit() {
         let e_t = |steps: f64| {
             let sphere = incoming_sphere(2.5e-3, 2700.0, 3.9, angle);
             let dt = law
-                .time_step(t_c / steps, 100.0 * mass)
+                .coarse_time_step(t_c / steps, 100.0 * mass)
                 .unwrap()
                 .tolerating_unstable_contacts();
             let out = wall_impact(&law, sphere, &floor(), dt, 10_000, |_| {}).unwrap();
@@ -111,7 +111,7 @@ fn below_the_limit_accuracy_depends_on_where_a_step_meets_the_contact() {
     let incoming = incoming_sphere(2.5e-3, 2700.0, 3.9, 0.0);
     let t_c = law.contact_duration(incoming.mass);
     for (steps, tolerance) in [(50.0, 1e-4), (10.0, 2.5e-3), (5.0, 2.5e-2)] {
-        let dt = law.time_step(t_c / steps, incoming.mass).unwrap();
+        let dt = law.coarse_time_step(t_c / steps, incoming.mass).unwrap();
         let mut spread = 0.0f64;
         for phase in 0..50 {
             let mut sphere = incoming;

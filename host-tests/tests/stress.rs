@@ -28,7 +28,7 @@ fn parameters<F: Float>(stiffness: f64, damping: f64, friction: f64) -> Tangenti
 fn kharaz_at<T: TangentialModel<f64>>(tangential: T, steps: f64) -> Result<f64, ParameterError> {
     let law = ContactLaw::new(LinearSpringDashpot::new(1000.0, 0.98).unwrap(), tangential);
     let sphere = incoming_sphere(RADIUS, DENSITY, 3.9, 20.0);
-    let dt = law.time_step(law.contact_duration(sphere.mass) / steps, sphere.mass)?;
+    let dt = law.coarse_time_step(law.contact_duration(sphere.mass) / steps, sphere.mass)?;
     let out = wall_impact(&law, sphere, &floor(), dt, 100_000, |f| {
         assert!(f.force_on_i().is_finite() && f.torque_on_i.is_finite());
     })
@@ -95,7 +95,7 @@ fn past_the_bound_nothing_non_finite_leaves_the_kernel() {
     sphere.velocity = Vec3::new(0.1, 0.0, 0.0);
     let limit = law.critical_time_step(sphere.mass);
     let dt = law
-        .time_step(2.0 * limit, 100.0 * sphere.mass)
+        .coarse_time_step(2.0 * limit, 100.0 * sphere.mass)
         .unwrap()
         .tolerating_unstable_contacts();
     let mut state = Default::default();
@@ -136,7 +136,7 @@ fn grazing_and_head_on_wall_impacts_never_gain_energy() {
                 let mut sphere = incoming_sphere(RADIUS, DENSITY, 3.9, angle);
                 sphere.angular_velocity = Vec3::new(0.0, spin, 0.0);
                 let dt = law
-                    .time_step(law.recommended_time_step(sphere.mass), sphere.mass)
+                    .coarse_time_step(law.recommended_time_step(sphere.mass), sphere.mass)
                     .unwrap();
                 let out = wall_impact(&law, sphere, &floor(), dt, 100_000, |_| {}).unwrap();
                 let gain = kinetic(&out.rebound) / kinetic(&sphere) - 1.0;
@@ -177,7 +177,7 @@ fn rest_on_incline<T: TangentialModel<f64>, R: Rotation>(
     let weight = Vec3::new(tilt.sin(), 0.0, -tilt.cos()) * (sphere.mass * GRAVITY);
     sphere.position = Vec3::new(0.0, 0.0, RADIUS + weight.z / 1000.0);
     let dt = law
-        .time_step(law.recommended_time_step(sphere.mass), sphere.mass)
+        .coarse_time_step(law.recommended_time_step(sphere.mass), sphere.mass)
         .unwrap();
     let mut state = Default::default();
     for _ in 0..steps {
@@ -255,7 +255,8 @@ fn extreme_but_valid_parameters_work_or_return_their_documented_error() {
             let mut sphere = incoming_sphere(radius, DENSITY, 3.9, angle);
             sphere.angular_velocity = Vec3::new(0.0, spin / radius, 0.0);
             // k_n stays 1000 N/m at every size: at 10 m the contact is very soft, at 1 mm stiff.
-            let dt = match law.time_step(law.recommended_time_step(sphere.mass), sphere.mass) {
+            let dt = match law.coarse_time_step(law.recommended_time_step(sphere.mass), sphere.mass)
+            {
                 Ok(dt) => dt,
                 Err(e) => panic!("{name}: the recommended step was refused: {e:?}"),
             };
@@ -305,7 +306,9 @@ fn extreme_sizes_and_mass_ratios_collide_cleanly() {
             LinearSpringDashpot::new(k, 0.8).unwrap(),
             ModelAA(parameters::<f64>(0.3 * k, 0.5, 0.5)),
         );
-        let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
+        let dt = law
+            .coarse_time_step(law.recommended_time_step(m), m)
+            .unwrap();
         let before = kinetic(&i) + kinetic(&j);
         let [i, j] = host_tests::impact::pair_collision(&law, i, j, dt, 1_000_000, |f, _, _| {
             assert!(f.force_on_j().is_finite());

@@ -72,7 +72,7 @@ fn a_wall_law_stiffer_than_the_step_is_refused() {
     let (pair_law, wall_law) = (linear_aa(1.0e3), linear_aa(1.0e6));
     let mass = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass;
     let seconds = 0.5 * pair_law.critical_time_step(mass / 2.0);
-    let step = pair_law.time_step(seconds, mass / 2.0).unwrap();
+    let step = pair_law.coarse_time_step(seconds, mass / 2.0).unwrap();
     assert!(seconds > 2.0 * wall_law.critical_time_step(mass));
     assert_eq!(
         drop_on_floor(&wall_law, step, 2.0e-3),
@@ -89,7 +89,7 @@ fn a_wall_law_stiffer_than_the_step_is_refused() {
     );
     // With the wall law's own step the drop rebounds below its height (e = 0.7).
     let own = wall_law
-        .time_step(wall_law.recommended_time_step(mass), mass)
+        .coarse_time_step(wall_law.recommended_time_step(mass), mass)
         .unwrap();
     let (rise, touching, unstable) = bounce(&wall_law, own, 2.0e-3).unwrap();
     assert!(rise < 2.0e-3 * 0.7 * 0.7 * 1.05, "rose {rise}");
@@ -107,7 +107,7 @@ fn hertz_impact(speed: f64, fraction: f64, tolerate: bool) -> Result<(f64, usize
     let mass = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass;
     let m_star = effective_mass(mass, mass);
     let mut step = law
-        .time_step(fraction * law.critical_time_step(m_star), m_star)
+        .coarse_time_step(fraction * law.critical_time_step(m_star), m_star)
         .unwrap();
     if tolerate {
         step = step.tolerating_unstable_contacts();
@@ -162,7 +162,7 @@ fn linear_pair(declared: f64, fraction: f64, tolerate: bool) -> Result<usize, Co
     let law = linear_aa(1.0e3);
     let mass = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass;
     let mut step = law
-        .time_step(fraction * law.critical_time_step(declared), declared)
+        .coarse_time_step(fraction * law.critical_time_step(declared), declared)
         .unwrap();
     if tolerate {
         step = step.tolerating_unstable_contacts();
@@ -195,7 +195,7 @@ fn a_step_checked_against_a_heavier_mass_is_refused() {
     // The per-call path refuses it too, and leaves the state as it was.
     let law = linear_aa(1.0e3);
     let step = law
-        .time_step(0.99 * law.critical_time_step(mass), mass)
+        .coarse_time_step(0.99 * law.critical_time_step(mass), mass)
         .unwrap();
     let i = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
     let mut j = Sphere::solid(Vec3::new(1.9 * RADIUS, 0.0, 0.0), RADIUS, DENSITY);
@@ -271,7 +271,7 @@ fn a_hertz_contact_at_its_own_limit_gets_the_same_verdict_in_a_block() {
     let frequency = (2.0 * 2.0e8 * a / m_star).sqrt();
     let limit = law.stable_phase() / frequency;
     for (fraction, within) in [(0.999, true), (1.001, false)] {
-        let step = law.time_step(fraction * limit, m_star).unwrap();
+        let step = law.coarse_time_step(fraction * limit, m_star).unwrap();
         let one = law.sphere_sphere(&i, &j, &mut (), step);
         assert_eq!(one.is_ok(), within, "{fraction}: {one:?}");
         let mut block = PairBlock::<f64, 4>::default();

@@ -81,12 +81,12 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         smallest_effective_mass: Self::Float,
     ) -> Result<TimeStep<Self::Float>, ParameterError>;
 
-    /// Checks a time step for accuracy; see
-    /// [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step).
+    /// Checks a time step for stability only; see
+    /// [`ContactLaw::coarse_time_step`](crate::ContactLaw::coarse_time_step).
     ///
     /// # Errors
-    /// As [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step).
-    fn accurate_step(
+    /// As [`ContactLaw::coarse_time_step`](crate::ContactLaw::coarse_time_step).
+    fn coarse_time_step(
         &self,
         seconds: Self::Float,
         smallest_effective_mass: Self::Float,

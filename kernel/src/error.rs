@@ -133,7 +133,7 @@ pub enum ContactError {
     /// The contact is stiffer than its time step was checked for: a pair lighter than the mass
     /// the step was checked against, or a [`Hertz`](crate::Hertz) overlap past the one of the
     /// declared impact. Explicit integration of it would be unstable and could create energy
-    /// (for a step made by [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step): it
+    /// (for a step made by [`ContactLaw::time_step`](crate::ContactLaw::time_step): it
     /// is past the law's accuracy limit, and could rebound faster than its restitution allows).
     /// (A step that [tolerates](crate::TimeStep::tolerating_unstable_contacts) such contacts
     /// evaluates and counts them instead.)

@@ -312,7 +312,7 @@ where
     /// Derived from the integrators' discrete map when the law is built (`docs/physics.md`, the
     /// accuracy limit), and never past [`ContactLaw::stable_phase`]. Every evaluation checks
     /// its contact against it ([`ContactError::PastStableStep`]), `w0` its tangent stiffness's
-    /// frequency; [`ContactLaw::accurate_step`] accepts steps up to
+    /// frequency; [`ContactLaw::time_step`] accepts steps up to
     /// [`ContactLaw::accurate_time_step`], for a [`Hertz`](crate::Hertz) law a little less (its
     /// stepped impacts overshoot the declared impact's peak overlap, and this phase allows for
     /// it).
@@ -397,15 +397,42 @@ where
 
     /// Checks a time step for a scene whose lightest contact has effective mass
     /// `smallest_effective_mass` (for equal spheres of mass m: m/2 between spheres, m against a
-    /// wall), for stability: every contact is checked against [`ContactLaw::stable_phase`].
-    /// Below the stability limit a contact resolved in a few steps can still rebound faster than
-    /// it came; [`ContactLaw::accurate_step`] checks for accuracy instead.
+    /// wall), for accuracy: below [`ContactLaw::accurate_time_step`], so that no head-on impact
+    /// stepped with it, at any phase, rebounds more than 0.02 of its impact speed above the
+    /// law's restitution; and every contact evaluated with it is checked against
+    /// [`ContactLaw::accurate_phase`] ([`ContactError::PastStableStep`] past it).
     ///
     /// # Errors
     /// [`ParameterError::NonFinite`] / [`ParameterError::NotPositive`] for the step or the mass;
     /// [`ParameterError::TimeStepUnstable`] when the step is at or past
-    /// [`ContactLaw::critical_time_step`].
+    /// [`ContactLaw::critical_time_step`]; [`ParameterError::TimeStepInaccurate`] when it is
+    /// stable but at or past [`ContactLaw::accurate_time_step`] (a caller who wants it anyway
+    /// says so with [`ContactLaw::coarse_time_step`]).
     pub fn time_step(
+        &self,
+        seconds: F,
+        smallest_effective_mass: F,
+    ) -> Result<TimeStep<F>, ParameterError> {
+        let step = self.coarse_time_step(seconds, smallest_effective_mass)?;
+        let limit = self.accurate_time_step(smallest_effective_mass);
+        if step.seconds() < limit {
+            Ok(TimeStep::accurate(step.seconds()))
+        } else {
+            Err(ParameterError::TimeStepInaccurate {
+                time_step: step.seconds().to_f64(),
+                limit: limit.to_f64(),
+            })
+        }
+    }
+
+    /// A step past the accuracy limit, asked for knowingly: checked for stability only (below
+    /// [`ContactLaw::critical_time_step`]), and every contact evaluated with it checked against
+    /// [`ContactLaw::stable_phase`] only. Its contacts can rebound faster than they came (up to
+    /// twice near the stability limit); [`TimeStep::is_accurate`] tells such a step apart.
+    ///
+    /// # Errors
+    /// As [`ContactLaw::time_step`], without [`ParameterError::TimeStepInaccurate`].
+    pub fn coarse_time_step(
         &self,
         seconds: F,
         smallest_effective_mass: F,
@@ -418,32 +445,6 @@ where
         } else {
             Err(ParameterError::TimeStepUnstable {
                 time_step: seconds.to_f64(),
-                limit: limit.to_f64(),
-            })
-        }
-    }
-
-    /// Checks a time step for accuracy: as [`ContactLaw::time_step`], and below
-    /// [`ContactLaw::accurate_time_step`]; every contact evaluated with it is checked against
-    /// [`ContactLaw::accurate_phase`] ([`ContactError::PastStableStep`] past it). No head-on
-    /// impact stepped with it, at any phase, rebounds more than 0.02 of its impact speed above
-    /// the law's restitution.
-    ///
-    /// # Errors
-    /// As [`ContactLaw::time_step`]; [`ParameterError::TimeStepInaccurate`] when the step is
-    /// stable but at or past [`ContactLaw::accurate_time_step`].
-    pub fn accurate_step(
-        &self,
-        seconds: F,
-        smallest_effective_mass: F,
-    ) -> Result<TimeStep<F>, ParameterError> {
-        let step = self.time_step(seconds, smallest_effective_mass)?;
-        let limit = self.accurate_time_step(smallest_effective_mass);
-        if step.seconds() < limit {
-            Ok(TimeStep::accurate(step.seconds()))
-        } else {
-            Err(ParameterError::TimeStepInaccurate {
-                time_step: step.seconds().to_f64(),
                 limit: limit.to_f64(),
             })
         }
@@ -699,12 +700,12 @@ where
         ContactLaw::time_step(self, seconds, smallest_effective_mass)
     }
 
-    fn accurate_step(
+    fn coarse_time_step(
         &self,
         seconds: F,
         smallest_effective_mass: F,
     ) -> Result<TimeStep<F>, ParameterError> {
-        ContactLaw::accurate_step(self, seconds, smallest_effective_mass)
+        ContactLaw::coarse_time_step(self, seconds, smallest_effective_mass)
     }
 
     fn recommended_time_step(&self, effective_mass: F) -> F {

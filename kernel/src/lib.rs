@@ -115,7 +115,7 @@
 //!   normal and tangential modes' explicit-integration limits, `dt < (2/w)(sqrt(1 + z^2) - z)`;
 //!   just below it a resting contact stays bounded, just above it it diverges; past it on purpose,
 //!   nothing non-finite leaves the kernel. (`stability.rs`, `stress.rs`)
-//! - **Accuracy limit.** [`ContactLaw::accurate_step`] refuses a stable step at which a head-on
+//! - **Accuracy limit.** [`ContactLaw::time_step`] refuses a stable step at which a head-on
 //!   impact, first seen at any phase of its step, could rebound more than 0.02 of its impact
 //!   speed above the law's restitution ([`ContactLaw::accurate_time_step`], derived from the
 //!   integrators' discrete map when the law is built), and checks each contact against

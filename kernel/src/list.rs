@@ -305,7 +305,8 @@ fn check_walls<F, const MATERIALS: usize>(walls: &[MaterialWall<F>]) -> Result<(
 }
 
 impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
-    /// Checks `seconds` for these spheres and walls: against the law of every pair of materials
+    /// Checks `seconds` for these spheres and walls, for accuracy
+    /// ([`ContactLaw::time_step`](crate::ContactLaw::time_step)): against the law of every pair of materials
     /// present, at the smallest effective mass two of their spheres give (the two lightest:
     /// `m_a m_b / (m_a + m_b)`), and against the law of every material present with every
     /// wall's material, at the lightest sphere's mass. No mass is declared by hand; a
@@ -325,26 +326,25 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         walls: &[MaterialWall<L::Float>],
     ) -> Result<TimeStep<L::Float>, ListError> {
         self.step_by(seconds, spheres, walls, L::time_step)
-            .map(|()| TimeStep::checked(seconds))
+            .map(|()| TimeStep::accurate(seconds))
     }
 
-    /// Checks `seconds` for accuracy, as [`MaterialTable::time_step`] checks it for stability:
-    /// with [`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step) for every pair of
-    /// materials present and every material with every wall's. Every contact evaluated with it
-    /// is checked against its law's [`accurate_phase`](crate::ContactLaw::accurate_phase).
+    /// Checks `seconds` for stability only, as [`MaterialTable::time_step`] checks it for
+    /// accuracy: with [`ContactLaw::coarse_time_step`](crate::ContactLaw::coarse_time_step) for
+    /// every pair of materials present and every material with every wall's. A step past the
+    /// accuracy limit, asked for knowingly.
     ///
     /// # Errors
-    /// As [`MaterialTable::time_step`], the refusing law's error being
-    /// [`ParameterError::TimeStepInaccurate`](crate::ParameterError::TimeStepInaccurate) for a
-    /// stable but inaccurate step.
-    pub fn accurate_step(
+    /// As [`MaterialTable::time_step`], without
+    /// [`ParameterError::TimeStepInaccurate`](crate::ParameterError::TimeStepInaccurate).
+    pub fn coarse_time_step(
         &self,
         seconds: L::Float,
         spheres: &impl Spheres<L::Float>,
         walls: &[MaterialWall<L::Float>],
     ) -> Result<TimeStep<L::Float>, ListError> {
-        self.step_by(seconds, spheres, walls, L::accurate_step)
-            .map(|()| TimeStep::accurate(seconds))
+        self.step_by(seconds, spheres, walls, L::coarse_time_step)
+            .map(|()| TimeStep::checked(seconds))
     }
 
     /// Checks `seconds` with `check` for every pair of materials present and every material

@@ -36,7 +36,7 @@ impl<F: Float> TimeStep<F> {
         }
     }
 
-    /// Whether the step was checked for accuracy ([`ContactLaw::accurate_step`](crate::ContactLaw::accurate_step)),
+    /// Whether the step was checked for accuracy ([`ContactLaw::time_step`](crate::ContactLaw::time_step)),
     /// so that each contact is checked against the law's
     /// [`accurate_phase`](crate::ContactLaw::accurate_phase) rather than its
     /// [`stable_phase`](crate::ContactLaw::stable_phase).

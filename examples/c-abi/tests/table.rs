@@ -639,8 +639,7 @@ fn bad_atoms_and_indices_name_the_atoms() {
     }
 }
 
-/// A stiff linear table whose step is checked for atoms a thousand times heavier than the
-/// host's.
+/// A stiff linear table whose step is checked for atoms far heavier than the host's.
 fn table_for_heavy_atoms() -> *mut ss_table<f64> {
     let table = table(SS_MODEL_AA);
     let mut report = ss_table_report::<f64>::default();
@@ -653,7 +652,7 @@ fn table_for_heavy_atoms() -> *mut ss_table<f64> {
             };
             assert_eq!(ss_table_set_f64(table, a, b, &stiff, null_mut()), SS_OK);
         }
-        let heavy = [1e-2; 3];
+        let heavy = [1.0; 3];
         assert_eq!(
             ss_table_prepare_f64(table, DT, heavy.as_ptr(), &mut report),
             SS_OK
@@ -680,25 +679,38 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
     let m = 1.0e-9;
     let undamped = 2.0 * (m / 2.0 / 1.0e6_f64).sqrt();
     let mut report = ss_table_report::<f64>::default();
+    // Material 1 alone: past its stability limit, refused as unstable with that limit.
     // SAFETY: valid pointers.
-    let code = unsafe { ss_table_prepare_f64(table, 1.5 * undamped, [m; 3].as_ptr(), &mut report) };
+    let code =
+        unsafe { ss_table_prepare_f64(table, 1.5 * undamped, [0.0, m, 0.0].as_ptr(), &mut report) };
     assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
     assert_eq!(report.materials, [1, 1]);
     assert_eq!(report.parameter, SS_PARAMETER_TIME_STEP);
     assert!(report.limit < undamped && report.limit > 0.5 * undamped);
+    // Below it but past its accuracy limit: refused as inaccurate, with the accurate step.
+    let stable = report.limit;
+    // SAFETY: valid pointers.
+    let code =
+        unsafe { ss_table_prepare_f64(table, 0.9 * stable, [0.0, m, 0.0].as_ptr(), &mut report) };
+    assert_eq!(code, SS_ERR_INACCURATE_TIME_STEP);
+    assert_eq!(report.materials, [1, 1]);
+    assert!(report.limit < 0.5 * stable && report.limit > 0.0);
     // Just past that limit: refused with material 1's atoms present, passed without them
     // (every other pair is softer).
     let just_past = 1.01 * report.limit;
     // SAFETY: valid pointers.
-    let code = unsafe { ss_table_prepare_f64(table, just_past, [m; 3].as_ptr(), null_mut()) };
-    assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
+    let code = unsafe { ss_table_prepare_f64(table, just_past, [m; 3].as_ptr(), &mut report) };
+    assert_eq!(
+        (code, report.materials),
+        (SS_ERR_INACCURATE_TIME_STEP, [1, 1])
+    );
     // SAFETY: valid pointers.
     let code = unsafe { ss_table_prepare_f64(table, just_past, [m, 0.0, m].as_ptr(), null_mut()) };
     assert_eq!(code, SS_OK);
     // A table refused is not evaluated.
     // SAFETY: valid pointers.
     let code = unsafe { ss_table_prepare_f64(table, 1.5 * undamped, [m; 3].as_ptr(), null_mut()) };
-    assert_eq!(code, SS_ERR_UNSTABLE_TIME_STEP);
+    assert_ne!(code, SS_OK);
     let mut host = Host::new(1, 3);
     let before = host.clone();
     assert_eq!(

@@ -302,10 +302,10 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         })
     }
 
-    /// `seconds` checked against the laws of `table` for the spheres and walls present: every
-    /// pair of materials at the smallest effective mass its spheres give, every sphere
-    /// material with every wall's ([`MaterialTable::time_step`]). Per-contact checks at every
-    /// step catch what this cannot see (a Hertz contact pressed harder than declared).
+    /// `seconds` checked for accuracy against the laws of `table` for the spheres and walls
+    /// present: every pair of materials at the smallest effective mass its spheres give, every
+    /// sphere material with every wall's ([`MaterialTable::time_step`]). Per-contact checks at
+    /// every step catch what this cannot see (a Hertz contact pressed harder than declared).
     ///
     /// # Errors
     /// [`StepError::TimeStep`] for the first pair of materials whose law refuses the step;
@@ -317,6 +317,22 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     ) -> Result<TimeStep<L::Float>, StepError> {
         table
             .time_step(seconds, &self.sphere_slice(), self.walls.walls())
+            .map_err(|error| StepError::from_list(error, &[]))
+    }
+
+    /// As [`Scene::time_step`], checked for stability only
+    /// ([`MaterialTable::coarse_time_step`]): a step past the accuracy limit, asked for
+    /// knowingly (its contacts can rebound faster than they came).
+    ///
+    /// # Errors
+    /// As [`Scene::time_step`].
+    pub fn coarse_time_step<const M: usize>(
+        &self,
+        table: &MaterialTable<L, M>,
+        seconds: L::Float,
+    ) -> Result<TimeStep<L::Float>, StepError> {
+        table
+            .coarse_time_step(seconds, &self.sphere_slice(), self.walls.walls())
             .map_err(|error| StepError::from_list(error, &[]))
     }
 

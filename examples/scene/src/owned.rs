@@ -45,13 +45,13 @@ pub const PARKING: usize = 16;
 /// let mut scene = OwnedScene::new(vec![drop], domain, (1.0e-3, 1.0e-4), [floor])
 ///     .unwrap()
 ///     .with_records();
-/// let time_step = scene.scene(|s| s.time_step(&table, 1.0e-6)).unwrap().unwrap();
+/// let time_step = scene.scene(|s| s.time_step(&table, 5.0e-7)).unwrap().unwrap();
 /// let input = StepInput {
 ///     table: &table, gravity: Vec3::new(0.0, 0.0, -9.81), time_step,
 ///     integrator: Integrator::VelocityVerlet,
 /// };
 /// let mut last = None;
-/// scene.run(&input, 20_000, |_, stats| last = stats.energy).unwrap();
+/// scene.run(&input, 40_000, |_, stats| last = stats.energy).unwrap();
 /// assert!(scene.spheres()[0].position.z < 5.0e-4); // resting on the floor
 /// let energy = last.unwrap();
 /// assert!(energy.dissipated_dashpots > 0.0);

@@ -51,7 +51,7 @@ fn head_on_with<N: NormalModel<f64>>(
     let mut sphere = soft_sphere::Sphere::solid(Vec3::new(0.0, 0.0, RADIUS), RADIUS, DENSITY);
     sphere.velocity = Vec3::new(0.0, 0.0, -SPEED);
     let dt = law
-        .time_step(
+        .coarse_time_step(
             law.contact_duration(sphere.mass) / steps_per_contact,
             sphere.mass,
         )
