@@ -629,6 +629,30 @@ fn a_diverging_step_is_reported_and_the_scene_refuses_to_go_on() {
 }
 
 #[test]
+fn non_finite_gravity_is_refused_and_changes_nothing() {
+    // It was taken for a divergence of sphere 0, and the scene halted.
+    let law = table();
+    for bad in [f64::NAN, f64::INFINITY, -f64::INFINITY] {
+        for integrator in Integrator::ALL {
+            let spheres = oblique_pair();
+            let mass = spheres[0].mass;
+            let mut scene =
+                OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls)
+                    .unwrap();
+            let before = scene.spheres().to_vec();
+            let gravity = Vec3::new(0.0, bad, -9.81);
+            let refused = input(&law, (gravity, 2e-6, mass), integrator);
+            assert_eq!(scene.run(&refused, 1, |_, _| {}), Err(StepError::Gravity));
+            assert_eq!(scene.spheres(), before);
+            // Not halted: a finite gravity steps on.
+            let fine = input(&law, (Vec3::new(0.0, 0.0, -9.81), 2e-6, mass), integrator);
+            assert!(scene.run(&fine, 1, |_, _| {}).is_ok());
+        }
+    }
+    assert!(StepError::Gravity.to_string().contains("gravity"));
+}
+
+#[test]
 fn threads_give_the_same_bits_as_one_thread() {
     let law = table();
     // A floor, and a ceiling through the top layer, so that spheres at both ends of the sphere
@@ -979,6 +1003,32 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
         domain.upper.z = bad;
         assert_eq!(sizes(&domain), Err(SceneError::Domain), "height {bad}");
     }
+    // More cells than a scene can hold (a 1 m box cut into 10 um cells, 1e15 of them, each axis
+    // below the per-axis bound): refused with the count, before anything is allocated (the
+    // owned scene aborted the process asking for 3e15 bytes).
+    let unit = Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(1.0, 1.0, 1.0),
+        periodic_x: true,
+        periodic_y: true,
+    };
+    let tiny = Scene::<Linear, NoWalls, 4>::buffer_sizes(&unit, (1e-5, 0.0), 2, 4, false);
+    match tiny {
+        Err(SceneError::TooManyCells { cells }) => assert!(cells >= 99_999u64.pow(3)),
+        other => panic!("expected TooManyCells, got {other:?}"),
+    }
+    let owned = OwnedScene::<Linear, NoWalls>::new(
+        vec![Sphere::solid(Vec3::new(0.5, 0.5, 0.5), 5e-6, 2500.0)],
+        unit,
+        (1e-5, 0.0),
+        NoWalls,
+    );
+    assert!(matches!(owned.err(), Some(SceneError::TooManyCells { .. })));
+    assert!(
+        SceneError::TooManyCells { cells: 1 << 50 }
+            .to_string()
+            .contains("cells")
+    );
     // A negative or non-finite skin.
     for skin in [-1e-4, f64::NAN, f64::INFINITY] {
         let mut spheres = checked_pair();
@@ -1467,4 +1517,53 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
         ),
         "{refused:?}"
     );
+}
+
+#[test]
+fn a_large_sphere_among_many_small_ones_goes_on_with_a_larger_parking() {
+    // A 4 mm sphere touched by 40 of 0.5 mm: past the owned scene's 16 parked contacts at the
+    // second call's list rebuild. It stopped with ParkingFull and no way to go on.
+    let mut big = Sphere::solid(Vec3::new(0.01, 0.01, 0.01), 4.0e-3, 2500.0);
+    // Spinning, so that every contact's tangential spring is loaded (a relaxed one is not kept).
+    big.angular_velocity = Vec3::new(0.3, 0.5, 1.0) * 100.0;
+    let mut spheres = vec![big];
+    let count = 40;
+    let golden = std::f64::consts::PI * (3.0 - 5.0f64.sqrt());
+    for k in 0..count {
+        let z = 1.0 - 2.0 * (k as f64 + 0.5) / count as f64;
+        let (r, phi) = ((1.0 - z * z).sqrt(), golden * k as f64);
+        let direction = Vec3::new(r * phi.cos(), r * phi.sin(), z);
+        let centre = big.position + direction * (4.5e-3 - 1.0e-6);
+        spheres.push(Sphere::solid(centre, 0.5e-3, 2500.0));
+    }
+    let domain = Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(0.02, 0.02, 0.02),
+        periodic_x: false,
+        periodic_y: false,
+    };
+    let law = table();
+    let small = spheres[1].mass;
+    let step = |scene: &mut OwnedScene<Linear, NoWalls>| {
+        let input = input(&law, (Vec3::ZERO, 1e-7, small), Integrator::SymplecticEuler);
+        scene.run(&input, 1, |_, _| {})
+    };
+    let mut scene =
+        OwnedScene::<Linear, _>::new(spheres.clone(), domain, (8.0e-3, 1e-4), NoWalls).unwrap();
+    assert_eq!(step(&mut scene), Ok(()));
+    assert_eq!(step(&mut scene), Err(StepError::ParkingFull));
+    assert!(StepError::ParkingFull.to_string().contains("with_parking"));
+    // With room for 64, the same scene goes on, its history kept: the same bits as a scene
+    // built with that room.
+    let mut roomy = scene.with_parking::<64>();
+    let mut reference = OwnedScene::<Linear, _>::new(spheres, domain, (8.0e-3, 1e-4), NoWalls)
+        .unwrap()
+        .with_parking::<64>();
+    let input = input(&law, (Vec3::ZERO, 1e-7, small), Integrator::SymplecticEuler);
+    reference.run(&input, 1, |_, _| {}).unwrap();
+    for _ in 0..3 {
+        roomy.run(&input, 1, |_, _| {}).unwrap();
+        reference.run(&input, 1, |_, _| {}).unwrap();
+    }
+    assert_eq!(roomy.spheres(), reference.spheres());
 }

@@ -13,6 +13,14 @@ pub enum SceneError {
     /// The domain or cell size is not finite and positive, or a periodic direction has fewer
     /// than 3 cells (the half-shell would visit a pair twice).
     Domain,
+    /// The domain cut into cells no smaller than the largest diameter plus the skin gives more
+    /// cells than a scene holds ([`MAX_CELLS`](crate::MAX_CELLS)): a cell size given in the
+    /// wrong unit, or a domain far larger than its spheres. Refused before anything is
+    /// allocated.
+    TooManyCells {
+        /// How many cells the domain would have (saturating at `u64::MAX`).
+        cells: u64,
+    },
     /// A stored pair state in the list belongs to a pair whose spheres are not this scene's
     /// (the buffers were not fresh, or come from another scene).
     History,
@@ -36,6 +44,12 @@ impl fmt::Display for SceneError {
             ),
             Self::Domain => f.write_str(
                 "the scene domain or cell size is invalid (periodic directions need 3 cells)",
+            ),
+            Self::TooManyCells { cells } => write!(
+                f,
+                "the domain would have {cells} cells, more than a scene holds ({}): is the \
+                 largest diameter or the domain in the wrong unit?",
+                crate::MAX_CELLS
             ),
             Self::History => f.write_str(
                 "a stored pair state belongs to spheres that are not this scene's (use fresh buffers)",
@@ -95,7 +109,9 @@ pub enum StepError {
     /// lost: build the scene again over larger buffers and the same history.
     ListFull,
     /// At a list rebuild, a sphere owned more than `K` touching contacts with stored states.
-    /// Nothing is lost: build the scene again with a larger `K`.
+    /// Nothing is lost: build the scene again with a larger `K` (an
+    /// [`OwnedScene`](crate::OwnedScene): [`with_parking`](crate::OwnedScene::with_parking),
+    /// which keeps the history).
     ParkingFull,
     /// Finite forces moved sphere `index` to a non-finite position or velocity. That sphere keeps
     /// its state from before the step, the others have moved, and the scene refuses to go on.
@@ -105,6 +121,8 @@ pub enum StepError {
     },
     /// An earlier step diverged; the scene does not step again.
     Halted,
+    /// The step's gravity is not finite. Refused before anything changes.
+    Gravity,
     /// An owned scene's buffers no longer fit its spheres (see
     /// [`OwnedScene::scene`](crate::OwnedScene)).
     Scene(SceneError),
@@ -176,11 +194,13 @@ impl fmt::Display for StepError {
                 materials[0], materials[1]
             ),
             Self::ListFull => f.write_str("the Verlet list buffer is too short"),
-            Self::ParkingFull => {
-                f.write_str("a sphere owns more touching contacts than its parking holds")
-            }
+            Self::ParkingFull => f.write_str(
+                "a sphere owns more touching contacts than its parking holds \
+                     (OwnedScene::with_parking gives it more room, keeping the history)",
+            ),
             Self::Diverged { index } => write!(f, "sphere {index} diverged to a non-finite state"),
             Self::Halted => f.write_str("an earlier step diverged; the scene has stopped"),
+            Self::Gravity => f.write_str("the step's gravity is not finite"),
             Self::Scene(error) => write!(f, "the scene could not be built: {error}"),
             Self::List(error) => write!(f, "the scene's own contact list was refused: {error}"),
         }

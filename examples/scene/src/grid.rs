@@ -44,6 +44,11 @@ const HALF_SHELL: [(isize, isize, isize); 14] = [
     (1, 1, 1),
 ];
 
+/// The most cells a scene's grid holds: 2^26 (256 MiB of cell counts), far past any domain
+/// cut into cells the size of its spheres that fits in memory beside them. A domain with more
+/// is refused ([`SceneError::TooManyCells`]) before anything is allocated.
+pub const MAX_CELLS: usize = 1 << 26;
+
 /// A domain cut into cells at least as large as the largest contact distance plus the skin.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Grid<F> {
@@ -59,6 +64,7 @@ impl<F: Float> Grid<F> {
         let extent = domain.upper - domain.lower;
         let mut cells = [0usize; 3];
         let mut cell_size = [F::ZERO; 3];
+        let mut total = 1.0f64;
         for (axis, length) in extent.to_array().into_iter().enumerate() {
             if !(length > F::ZERO && length.is_finite() && min_cell_size > F::ZERO) {
                 return Err(SceneError::Domain);
@@ -68,11 +74,19 @@ impl<F: Float> Grid<F> {
                 return Err(SceneError::Domain);
             }
             let count = (count as usize).max(1);
+            total *= count as f64;
             if Self::periodic(&domain, axis) && count < 3 {
                 return Err(SceneError::Domain);
             }
             cells[axis] = count;
             cell_size[axis] = length / F::from_f64(count as f64);
+        }
+        // The product, not each axis, is what the buffers hold.
+        if total > MAX_CELLS as f64 {
+            // `as` saturates: a count past u64 reads as u64::MAX.
+            return Err(SceneError::TooManyCells {
+                cells: total as u64,
+            });
         }
         Ok(Self {
             domain,

@@ -51,7 +51,7 @@ mod walls;
 pub use buffers::{BufferSizes, SceneBuffers};
 pub use energy::Energy;
 pub use error::{SceneError, StepError};
-pub use grid::Domain;
+pub use grid::{Domain, MAX_CELLS};
 #[cfg(feature = "alloc")]
 pub use owned::{OwnedScene, PAIRS_PER_SPHERE, PARKING};
 pub use parallel::{Executor, Serial};

@@ -5,6 +5,7 @@ use alloc::vec::Vec;
 
 use soft_sphere::{CheckedSphere, Interaction, Law, PairLoad, Sphere, Vec3};
 
+use crate::energy::Ledger;
 use crate::parallel::{Executor, Serial};
 use crate::{
     Domain, Parking, Scene, SceneBuffers, SceneError, StepError, StepInput, StepStats, WallSet,
@@ -20,8 +21,8 @@ pub const PAIRS_PER_SPHERE: usize = 8;
 pub const PARKING: usize = 16;
 
 /// A [`Scene`] that owns its spheres, material ids, walls and buffers, sized for
-/// [`PAIRS_PER_SPHERE`] list entries per sphere and at most [`PARKING`] stored contacts per
-/// sphere.
+/// [`PAIRS_PER_SPHERE`] list entries per sphere and at most `K` ([`PARKING`] unless
+/// [`OwnedScene::with_parking`] says otherwise) stored contacts per sphere.
 /// Steps run inside [`OwnedScene::run`] or [`OwnedScene::scene`]; the contact history carries
 /// over from one to the next.
 ///
@@ -57,7 +58,7 @@ pub const PARKING: usize = 16;
 /// assert!(energy.dissipated_dashpots > 0.0);
 /// ```
 #[derive(Clone, Debug)]
-pub struct OwnedScene<L: Law, W> {
+pub struct OwnedScene<L: Law, W, const K: usize = PARKING> {
     spheres: Vec<CheckedSphere<L::Float>>,
     materials: Vec<u32>,
     walls: W,
@@ -68,11 +69,14 @@ pub struct OwnedScene<L: Law, W> {
     pairs: Vec<[u32; 2]>,
     vectors: Vec<Vec3<L::Float>>,
     states: Vec<L::State>,
-    parking: Vec<Parking<L::State, PARKING>>,
+    parking: Vec<Parking<L::State, K>>,
     records: Vec<Interaction<L::Float>>,
     loads: Vec<PairLoad<L::Float>>,
     list_builds: usize,
     halted: bool,
+    /// The energy account's running totals, carried from one [`OwnedScene::scene`] call to the
+    /// next so that the account runs on across calls.
+    ledger: Ledger<L::Float>,
 }
 
 impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
@@ -118,9 +122,41 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             loads: vec![PairLoad::default(); sizes.loads],
             list_builds: 0,
             halted: false,
+            ledger: Ledger::default(),
         })
     }
 
+    /// The same scene, its spheres, history and energy account kept, with room for `P`
+    /// stored contacts per sphere at a list rebuild: what a scene that stopped with
+    /// [`StepError::ParkingFull`] (a large sphere among many small ones) goes on with.
+    pub fn with_parking<const P: usize>(self) -> OwnedScene<L, W, P> {
+        let parking = if self.parking.is_empty() {
+            Vec::new()
+        } else {
+            vec![Parking::default(); self.spheres.len()]
+        };
+        OwnedScene {
+            spheres: self.spheres,
+            materials: self.materials,
+            walls: self.walls,
+            domain: self.domain,
+            largest_diameter: self.largest_diameter,
+            skin: self.skin,
+            cells: self.cells,
+            pairs: self.pairs,
+            vectors: self.vectors,
+            states: self.states,
+            parking,
+            records: self.records,
+            loads: self.loads,
+            list_builds: self.list_builds,
+            halted: self.halted,
+            ledger: self.ledger,
+        }
+    }
+}
+
+impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
     /// The same scene with material ids `materials`, one per sphere.
     ///
     /// # Errors
@@ -141,14 +177,16 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
     }
 
     /// Calls `work` with the scene over the owned buffers (to step it, read its contacts, check
-    /// a time step). The contact history carries over from one call to the next; the list is
-    /// built afresh in each.
+    /// a time step). The contact history and the energy account carry over from one call to
+    /// the next; the list is built afresh in each, so [`Scene::contacts`] holds the contacts of
+    /// a step made in the same call (read them in `work`, or in [`OwnedScene::run`]'s `each`,
+    /// not in a later call).
     ///
     /// # Errors
     /// [`StepError::Halted`] after a step diverged.
     pub fn scene<R>(
         &mut self,
-        work: impl FnOnce(&mut Scene<'_, L, W, PARKING>) -> R,
+        work: impl FnOnce(&mut Scene<'_, L, W, K>) -> R,
     ) -> Result<R, StepError> {
         if self.halted {
             return Err(StepError::Halted);
@@ -169,7 +207,9 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             buffers,
             self.walls.clone(),
         )?;
+        scene.ledger = self.ledger;
         let returned = work(&mut scene);
+        self.ledger = scene.ledger;
         self.list_builds = scene.list_builds();
         self.halted = scene.halted();
         self.walls = scene.walls().clone();

@@ -88,6 +88,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// - [`StepError::Diverged`] when finite forces moved a sphere to a non-finite position or
     ///   velocity; that sphere keeps its previous state, and every later step returns
     ///   [`StepError::Halted`].
+    /// - [`StepError::Gravity`] for a non-finite gravity, before anything changes.
     pub fn step_on<E: Executor, const M: usize>(
         &mut self,
         input: &StepInput<'_, L, M>,
@@ -95,6 +96,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     ) -> Result<StepStats<L::Float>, StepError> {
         if self.halted {
             return Err(StepError::Halted);
+        }
+        if !input.gravity.is_finite() {
+            return Err(StepError::Gravity);
         }
         let dt = input.time_step.seconds();
         let half = <L::Float as Float>::HALF;
