@@ -1567,3 +1567,62 @@ fn a_large_sphere_among_many_small_ones_goes_on_with_a_larger_parking() {
     }
     assert_eq!(roomy.spheres(), reference.spheres());
 }
+
+#[test]
+fn spheres_larger_than_declared_or_outside_the_box_are_refused() {
+    // Two 4 mm spheres declared as 1 mm met at 0.5 m/s and left at 2.11 m/s each.
+    let pair = |radius: f64| {
+        let mut a = Sphere::solid(Vec3::new(2.0e-3, 2.5e-3, 2.5e-3), radius, 2500.0);
+        let mut b = Sphere::solid(
+            Vec3::new(2.0e-3 + 2.0 * radius + 1e-4, 2.5e-3, 2.5e-3),
+            radius,
+            2500.0,
+        );
+        a.velocity.x = 0.25;
+        b.velocity.x = -0.25;
+        vec![a, b]
+    };
+    let closed = Domain {
+        lower: Vec3::ZERO,
+        upper: Vec3::new(0.02, 0.005, 0.005),
+        periodic_x: false,
+        periodic_y: false,
+    };
+    let built = |spheres: Vec<Sphere<f64>>, diameter: f64| {
+        OwnedScene::<Linear, NoWalls>::new(spheres, closed, (diameter, 1e-4), NoWalls).err()
+    };
+    assert_eq!(
+        built(pair(2.0e-3), 1.0e-3),
+        Some(SceneError::Diameter { index: 0 })
+    );
+    assert_eq!(built(pair(2.0e-3), 4.0e-3), None);
+    // A centre outside along a closed direction; along a periodic one it is the scene's to wrap.
+    let mut outside = pair(0.5e-3);
+    outside[1].position.z = -1e-3;
+    assert_eq!(
+        built(outside, 1.0e-3),
+        Some(SceneError::Outside { index: 1 })
+    );
+    let mut beyond = pair(0.5e-3);
+    beyond[0].position.y = 0.006;
+    assert_eq!(
+        built(beyond.clone(), 1.0e-3),
+        Some(SceneError::Outside { index: 0 })
+    );
+    let periodic = Domain {
+        periodic_y: true,
+        ..closed
+    };
+    let wrapped = OwnedScene::<Linear, NoWalls>::new(beyond, periodic, (1.0e-3, 1e-4), NoWalls);
+    assert!(wrapped.is_ok());
+    assert!(
+        SceneError::Diameter { index: 3 }
+            .to_string()
+            .contains("sphere 3")
+    );
+    assert!(
+        SceneError::Outside { index: 3 }
+            .to_string()
+            .contains("outside")
+    );
+}

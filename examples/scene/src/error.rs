@@ -21,6 +21,17 @@ pub enum SceneError {
         /// How many cells the domain would have (saturating at `u64::MAX`).
         cells: u64,
     },
+    /// Sphere `index` is larger than the declared largest diameter, which sizes the grid's
+    /// cells: its contacts with spheres two cells away would go unseen.
+    Diameter {
+        /// The sphere.
+        index: usize,
+    },
+    /// Sphere `index`'s centre is outside the domain along a direction that is not periodic.
+    Outside {
+        /// The sphere.
+        index: usize,
+    },
     /// A stored pair state in the list belongs to a pair whose spheres are not this scene's
     /// (the buffers were not fresh, or come from another scene).
     History,
@@ -51,6 +62,13 @@ impl fmt::Display for SceneError {
                  largest diameter or the domain in the wrong unit?",
                 crate::MAX_CELLS
             ),
+            Self::Diameter { index } => write!(
+                f,
+                "sphere {index} is larger than the scene's declared largest diameter"
+            ),
+            Self::Outside { index } => {
+                write!(f, "sphere {index}'s centre is outside the scene's domain")
+            }
             Self::History => f.write_str(
                 "a stored pair state belongs to spheres that are not this scene's (use fresh buffers)",
             ),

@@ -185,6 +185,33 @@ pub fn check_spheres<F: Float>(
     })
 }
 
+/// Checks each sphere against what the scene was built for: a diameter no larger than the
+/// declared largest (the grid's cells are sized from it: a larger sphere's contacts across
+/// cells would go unseen), and a centre inside the domain along its closed directions.
+fn check_placement<F: Float>(
+    spheres: &[CheckedSphere<F>],
+    domain: &Domain<F>,
+    largest_diameter: F,
+) -> Result<(), SceneError> {
+    let closed = [!domain.periodic_x, !domain.periodic_y, true];
+    for (index, sphere) in spheres.iter().enumerate() {
+        if sphere.radius + sphere.radius > largest_diameter {
+            return Err(SceneError::Diameter { index });
+        }
+        let (p, lo, hi) = (
+            sphere.position.to_array(),
+            domain.lower.to_array(),
+            domain.upper.to_array(),
+        );
+        for axis in 0..3 {
+            if closed[axis] && !(p[axis] >= lo[axis] && p[axis] <= hi[axis]) {
+                return Err(SceneError::Outside { index });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// True when the law keeps a per-contact state: a stateless law's scene parks none.
 const fn stores<S>() -> bool {
     size_of::<S>() > 0
@@ -223,7 +250,9 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     ///
     /// # Errors
     /// [`SceneError::Domain`] for a bad domain or skin; [`SceneError::Materials`] for material
-    /// ids that are not one per sphere; [`SceneError::BufferLength`] for a buffer of another
+    /// ids that are not one per sphere; [`SceneError::Diameter`] for a sphere larger than
+    /// `largest_diameter`, [`SceneError::Outside`] for one outside the domain along a closed
+    /// direction; [`SceneError::BufferLength`] for a buffer of another
     /// length than [`Scene::buffer_sizes`] gives (`records` and `loads` may be empty);
     /// [`SceneError::History`] for stored states of pairs that are not this scene's.
     pub fn new(
@@ -241,6 +270,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         if materials.len() != n {
             return Err(SceneError::Materials);
         }
+        check_placement(spheres, &domain, largest_diameter)?;
         let b = buffers;
         let list = b.pairs.len();
         let sizes = Self::buffer_sizes(&domain, (largest_diameter, skin), n, list, true)?;

@@ -85,7 +85,9 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
     ///
     /// # Errors
     /// [`SceneError::Sphere`] for the first invalid sphere; [`SceneError::Domain`] for a bad
-    /// domain or skin.
+    /// domain or skin; [`SceneError::TooManyCells`] for a domain too finely cut;
+    /// [`SceneError::Diameter`] / [`SceneError::Outside`] for the first sphere larger than
+    /// `largest_diameter` or outside the domain.
     pub fn new(
         spheres: Vec<Sphere<L::Float>>,
         domain: Domain<L::Float>,
@@ -106,6 +108,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
         if !skin_ok {
             return Err(SceneError::Domain);
         }
+        crate::check_placement(&spheres, &domain, largest_diameter)?;
         Ok(Self {
             spheres,
             materials: vec![0; n],
