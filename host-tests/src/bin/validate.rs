@@ -98,6 +98,7 @@ fn run() -> Result<bool, Box<dyn Error>> {
     plot_mfix(&out_dir, mfix)?;
     plot_plate(&out_dir, plate)?;
     plot_chung_ooi(&out_dir, oblique)?;
+    plot_accuracy(&out_dir)?;
     let passed = report_checks(&out_dir, &cases)?;
     progress(&format!("done; results in {}", out_dir.display()));
     Ok(passed)
@@ -441,5 +442,92 @@ fn plot_plate(out_dir: &Path, plate: &CaseOutput) -> Result<(), Box<dyn Error>> 
             Axes::Linear,
         )?;
     }
+    Ok(())
+}
+
+/// The worst rebound over 16 entry phases of a head-on wall impact, less the law's restitution,
+/// against the step as a fraction of the stability limit (docs/physics.md, section 4.4), with
+/// each law's accuracy limit marked: `accuracy_rebound.csv` and `.svg`.
+fn plot_accuracy(out_dir: &Path) -> Result<(), Box<dyn Error>> {
+    use host_tests::impact::{floor, incoming_sphere, wall_impact};
+    use soft_sphere::{
+        ContactLaw, Frictionless, Hertz, HertzImpact, LinearSpringDashpot, NormalModel,
+    };
+
+    fn sweep<N: NormalModel<f64>>(
+        law: &ContactLaw<f64, N, Frictionless>,
+        e: f64,
+    ) -> (Vec<(f64, f64)>, f64) {
+        let sphere = incoming_sphere::<f64>(2.5e-3, 2700.0, 1.0, 0.0);
+        let limit = law.critical_time_step(sphere.mass);
+        let points = (1..=99)
+            .map(|k| {
+                let fraction = f64::from(k) / 100.0;
+                let dt = law
+                    .coarse_time_step(fraction * limit, sphere.mass)
+                    .expect("below the stability limit")
+                    .tolerating_unstable_contacts();
+                let worst = (0..16)
+                    .map(|phase| {
+                        let mut s = sphere;
+                        s.position.z += dt.seconds() * (1.0 - f64::from(phase) / 16.0);
+                        wall_impact(law, s, &floor(), dt, 1_000_000, |_| {})
+                            .map_or(f64::NAN, |o| o.rebound.velocity.z)
+                    })
+                    .fold(f64::NEG_INFINITY, f64::max);
+                (fraction, worst - e)
+            })
+            .collect();
+        (points, law.accurate_time_step(sphere.mass) / limit)
+    }
+    let linear = |e: f64| {
+        ContactLaw::new(
+            LinearSpringDashpot::new(1000.0, e).expect("a law"),
+            Frictionless,
+        )
+    };
+    let hertz = |e: f64| {
+        let impact = HertzImpact {
+            speed: 1.0,
+            effective_radius: 2.5e-3,
+        };
+        ContactLaw::new(
+            Hertz::new(70e9 / 1.5, e, impact).expect("a law"),
+            Frictionless,
+        )
+    };
+    let mut runs = Vec::new();
+    for e in [0.3, 0.7, 1.0] {
+        runs.push((format!("linear e {e}"), sweep(&linear(e), e)));
+    }
+    runs.push(("Hertz e 0.7".to_string(), sweep(&hertz(0.7), 0.7)));
+    let mut csv =
+        String::from("law,fraction_of_stability_limit,worst_rebound_above_e,accurate_fraction\n");
+    let mut series = Vec::new();
+    let mut limits = Vec::new();
+    for (name, (points, accurate)) in &runs {
+        for (x, y) in points {
+            csv.push_str(&format!("{name},{x},{y},{accurate}\n"));
+        }
+        series.push(Series::new(name.clone(), points.clone(), Mark::Line));
+        limits.push((*accurate, 0.02));
+    }
+    series.push(Series::new("accuracy limits", limits, Mark::Points));
+    series.push(Series::new(
+        "0.02",
+        vec![(0.0, 0.02), (1.0, 0.02)],
+        Mark::Theory,
+    ));
+    std::fs::write(out_dir.join("accuracy_rebound.csv"), csv)?;
+    chart(
+        &out_dir.join("accuracy_rebound.svg"),
+        "Head-on impact, worst of 16 phases: rebound above e",
+        (
+            "step / stability limit",
+            "worst rebound - e (of the impact speed)",
+        ),
+        &series,
+        Axes::Linear,
+    )?;
     Ok(())
 }
