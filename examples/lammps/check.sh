@@ -691,6 +691,8 @@ bad "restitution above 1" "soft/sphere aa 1000 1.5 285.7 0.5 0.5" "e (restitutio
 bad "negative friction" "soft/sphere stateless 1000 0.9 285.7 0.5 -0.5" "mu (friction) must not be negative" 1e-6
 bad "unknown law" "soft/sphere hertz 1000 0.9 285.7 0.5 0.5" "unknown law 'hertz'" 1e-6
 bad "time step past the stability limit" "soft/sphere aa 1000 0.9 285.7 0.5 0.5" "stability limit" 1e-3
+# Stable (the limit is about 4.5e-5 s here) but past the accuracy limit (about 6.5e-6 s).
+bad "time step past the accuracy limit" "soft/sphere aa 1000 0.9 285.7 0.5 0.5" "accuracy limit" 2e-5
 # Per-type coefficients and the Hertz laws: two types, two atoms 0.9 mm apart (1 mm spheres).
 bad_pairs() { # name, expected words, then the pair lines
   local name="$1" words="$2"

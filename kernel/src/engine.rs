@@ -228,7 +228,8 @@ impl<L: Law> BoundLaw<L> {
         }
     }
 
-    /// How many contacts past the step's stability limit this bound law has evaluated: always
+    /// How many contacts past the step's limit (its accuracy limit, or for a coarse step its
+    /// stability limit) this bound law has evaluated: always
     /// zero unless its step [tolerates](TimeStep::tolerating_unstable_contacts) them (otherwise
     /// they are refused with [`ContactError::PastStableStep`]).
     pub fn unstable_contacts(&self) -> usize {

@@ -298,8 +298,10 @@ where
 
     /// The largest phase `w0 dt` (rad) a step may advance a contact's normal oscillator by, `w0`
     /// the contact's undamped normal frequency (for [`Hertz`](crate::Hertz), at its current
-    /// overlap), and keep the normal and the tangential modes stable. Every evaluation checks its
-    /// contact against it ([`ContactError::PastStableStep`]). It is
+    /// overlap), and keep the normal and the tangential modes stable. Every evaluation with a
+    /// [coarse](ContactLaw::coarse_time_step) step checks its contact against it
+    /// ([`ContactError::PastStableStep`]); an accurate step checks against the smaller
+    /// [`ContactLaw::accurate_phase`]. It is
     /// [`ContactLaw::critical_time_step`] times `w0`, the same for every mass (rolling aside:
     /// its limit is checked by [`ContactLaw::time_step`]).
     pub fn stable_phase(&self) -> F {

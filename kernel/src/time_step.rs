@@ -1,11 +1,12 @@
-//! A time step checked against a law's stability limit.
+//! A time step checked against a law's accuracy limit (or, knowingly, its stability limit only).
 
 use crate::float::Float;
 
 /// A time step (s) that a [`ContactLaw`](crate::ContactLaw) has checked: finite, positive and
-/// below the law's explicit-integration stability limit for the smallest effective mass the
-/// caller declared. Made by [`ContactLaw::time_step`](crate::ContactLaw::time_step) (or, from
-/// the spheres actually present, by a [`MaterialTable`](crate::MaterialTable)).
+/// below the law's accuracy limit for the smallest effective mass the caller declared (a
+/// [coarse](crate::ContactLaw::coarse_time_step) step: below its explicit-integration stability
+/// limit). Made by [`ContactLaw::time_step`](crate::ContactLaw::time_step) (or, from the spheres
+/// actually present, by a [`MaterialTable`](crate::MaterialTable)).
 ///
 /// Every contact evaluated with it is checked against the same limit: a contact stiffer than
 /// the step allows (a lighter pair than the one declared, a [`Hertz`](crate::Hertz) overlap past

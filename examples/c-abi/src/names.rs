@@ -124,7 +124,7 @@ pub extern "C" fn ss_contact_error_text(code: i32) -> *const c_char {
         SS_ERR_COINCIDENT_CENTRES => b"the two centres coincide\0",
         SS_ERR_NON_FINITE_RESULT => b"the contact force overflowed\0",
         SS_ERR_PAST_STABLE_STEP => {
-            b"the contact is stiffer than the time step was checked for (unstable: shorten the time step, or for a Hertz law declare a faster impact)\0"
+            b"the contact is stiffer than the time step was checked for (past its accuracy or stability limit: shorten the time step, or for a Hertz law declare a faster impact)\0"
         }
         SS_ERR_LENGTH => b"a neighbour count or the history size is wrong\0",
         SS_ERR_INDEX => b"a neighbour index is past the spheres\0",

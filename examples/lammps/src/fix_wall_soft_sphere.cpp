@@ -140,6 +140,11 @@ void FixWallSoftSphere::init()
                "{}: the time step {} s is at or past the kernel's stability limit {} s for the "
                "lightest spheres",
                style, update->dt, report.limit);
+  if (code == SS_ERR_INACCURATE_TIME_STEP)
+    error->all(FLERR,
+               "{}: the time step {} s is at or past the kernel's accuracy limit {} s for the "
+               "lightest spheres: a contact could rebound faster than its restitution allows",
+               style, update->dt, report.limit);
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model),
                SoftSphere::parameter_error(code));

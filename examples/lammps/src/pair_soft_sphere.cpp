@@ -237,6 +237,12 @@ void PairSoftSphere::prepare()
                "{}: the time step {} s is at or past the kernel's stability limit {} s for "
                "types {} and {} (their lightest atoms)",
                STYLE, update->dt, report.limit, a, b);
+  if (code == SS_ERR_INACCURATE_TIME_STEP)
+    error->all(FLERR,
+               "{}: the time step {} s is at or past the kernel's accuracy limit {} s for "
+               "types {} and {} (their lightest atoms): a contact could rebound faster than "
+               "its restitution allows",
+               STYLE, update->dt, report.limit, a, b);
   if (code == SS_ERR_NON_FINITE_INPUT)
     error->all(FLERR, "{}: an atom mass is not finite", STYLE);
   error->all(FLERR, "{}: types {} and {}: {} {}", STYLE, a, b,
