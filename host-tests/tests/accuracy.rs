@@ -166,6 +166,17 @@ fn stable_steps_that_create_energy_are_refused() {
         }
         other => panic!("expected TimeStepInaccurate, got {other:?}"),
     }
+    // The documented boundary, to the last bit: a step at the accurate limit is refused, the
+    // largest float below it accepted as given.
+    let exact = law.accurate_time_step(m);
+    assert!(matches!(
+        law.time_step(exact, m),
+        Err(ParameterError::TimeStepInaccurate { .. })
+    ));
+    assert_eq!(
+        law.time_step(exact.next_down(), m).unwrap().seconds(),
+        exact.next_down()
+    );
     // Past the stability limit it is refused as unstable.
     let unstable = 1.01 * law.critical_time_step(m);
     assert!(matches!(
