@@ -260,3 +260,24 @@ fn the_undamped_limit_is_the_closed_form_of_the_discrete_map() {
         closed(0.02)
     );
 }
+
+#[test]
+fn a_hertz_limit_is_the_same_phase_at_every_declared_speed() {
+    // A Hertz impact is self-similar: its rebound at a given phase of the peak frequency does
+    // not depend on the speed, so neither does the accurate phase.
+    for e in [0.3, 0.7, 1.0] {
+        let phase = |speed: f64| {
+            let impact = HertzImpact {
+                speed,
+                effective_radius: RADIUS,
+            };
+            ContactLaw::new(Hertz::new(70e9 / 1.5, e, impact).unwrap(), Frictionless)
+                .accurate_phase()
+        };
+        let (slow, fast) = (phase(0.25), phase(4.0));
+        assert!(
+            (slow / fast - 1.0).abs() < 1e-3,
+            "e {e}: {slow} at 0.25 m/s, {fast} at 4 m/s"
+        );
+    }
+}
