@@ -221,6 +221,15 @@ impl Mixture {
     }
 }
 
+/// The lightest mass among the spheres of `material` (infinite when there are none).
+fn lightest_of(mass: &[f64], materials: &[u32], material: u32) -> f64 {
+    mass.iter()
+        .zip(materials)
+        .filter(|(_, k)| **k == material)
+        .map(|(&mass, _)| mass)
+        .fold(f64::INFINITY, f64::min)
+}
+
 fn floor_of(material: u32) -> MaterialWall<f64> {
     MaterialWall {
         wall: floor(),
@@ -724,14 +733,7 @@ fn the_step_is_checked_against_every_material_pair_and_wall_present() {
         let wt = (kt / mt).sqrt();
         bound((k / m_star).sqrt(), zeta).min(bound(wt, eta_t / (2.0 * mt * wt)))
     };
-    let lightest = |material: u32| {
-        m.mass
-            .iter()
-            .zip(&two)
-            .filter(|(_, k)| **k == material)
-            .map(|(&mass, _)| mass)
-            .fold(f64::INFINITY, f64::min)
-    };
+    let lightest = |material: u32| lightest_of(&m.mass, &two, material);
     let materials = [glass(), rubber(), steel()];
     let pair_limit = |a: u32, b: u32| {
         let m_star = effective_mass(lightest(a), lightest(b));
@@ -1412,14 +1414,7 @@ fn the_step_is_checked_for_accuracy_against_every_material_pair_and_wall_present
         material: &two,
         ..m.arrays()
     };
-    let lightest = |material: u32| {
-        m.mass
-            .iter()
-            .zip(&two)
-            .filter(|(_, k)| **k == material)
-            .map(|(&mass, _)| mass)
-            .fold(f64::INFINITY, f64::min)
-    };
+    let lightest = |material: u32| lightest_of(&m.mass, &two, material);
     let pair = |a: u32, b: u32| {
         let law = t.law(a as usize, b as usize).unwrap();
         law.accurate_time_step(effective_mass(lightest(a), lightest(b)))

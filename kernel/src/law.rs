@@ -10,7 +10,7 @@ use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
 use crate::geometry::{self, ContactFrame, LeverArm};
-use crate::normal::{Accuracy, NormalModel, NormalOscillator, accurate_phase};
+use crate::normal::{Accuracy, NormalModel, NormalOscillator, scan_accuracy};
 use crate::rolling::{NoRolling, RollingInput, RollingModel};
 use crate::rotation::{NonRotating, Rotating, Rotation};
 use crate::tangential::{ContactState, TangentialInput, TangentialModel};
@@ -193,7 +193,7 @@ impl<F: Float, N: NormalModel<F>, T: TangentialModel<F>> ContactLaw<F, N, T> {
             rolling: NoRolling,
             lever_arm: LeverArm::Radius,
             stable_phase: stable_phase(&normal, &tangential, Rotating::ROTATES),
-            normal_accuracy: accurate_phase(&normal),
+            normal_accuracy: scan_accuracy(&normal),
             slots: PhantomData,
         }
     }

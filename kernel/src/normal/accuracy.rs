@@ -57,7 +57,7 @@ pub(crate) struct Accuracy<F> {
 
 /// The accuracy limit of `normal`, scanned up to its stability limit. [`FIRST`] when even that
 /// step misses (no law of this crate does).
-pub(crate) fn accurate_phase<F: Float, N: NormalModel<F>>(normal: &N) -> Accuracy<F> {
+pub(crate) fn scan_accuracy<F: Float, N: NormalModel<F>>(normal: &N) -> Accuracy<F> {
     let impact = Impact::new(normal);
     let stable_phase = normal.critical_time_step(F::ONE) * impact.natural_frequency;
     let reference = impact.rebound(F::from_f64(REFERENCE), F::ONE).0;

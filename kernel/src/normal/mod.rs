@@ -10,7 +10,7 @@ mod accuracy;
 mod hertz;
 mod linear;
 
-pub(crate) use accuracy::{Accuracy, accurate_phase};
+pub(crate) use accuracy::{Accuracy, scan_accuracy};
 
 pub use hertz::{Hertz, HertzImpact};
 pub use linear::{LinearSpring, LinearSpringDashpot};
