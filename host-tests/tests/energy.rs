@@ -234,10 +234,9 @@ fn a_head_on_impact_dissipates_one_minus_e_squared_of_its_relative_kinetic_energ
         let m = effective_mass(a.mass, b.mass);
         let duration = law.contact_duration(m);
         let dt = duration / 1000.0;
-        let mut scene =
-            OwnedScene::<_, _>::new(vec![a, b], open_box(), (2.0 * RADIUS, 1e-4), NoWalls)
-                .unwrap()
-                .with_records();
+        let mut scene = OwnedScene::<_, _>::new(vec![a, b], open_box(), 1e-4, NoWalls)
+            .unwrap()
+            .with_records();
         let input = StepInput {
             table: &table,
             gravity: Vec3::ZERO,
@@ -285,7 +284,7 @@ fn an_oblique_impact_that_slides_throughout_gives_its_slider_the_rigid_body_shar
     let m = effective_mass(a.mass, b.mass);
     let duration = law.contact_duration(m);
     let dt = duration / 1000.0;
-    let mut scene = OwnedScene::<_, _>::new(vec![a, b], open_box(), (2.0 * RADIUS, 1e-3), NoWalls)
+    let mut scene = OwnedScene::<_, _>::new(vec![a, b], open_box(), 1e-3, NoWalls)
         .unwrap()
         .with_records();
     let input = StepInput {
@@ -351,7 +350,7 @@ fn a_sphere_sliding_on_a_floor_loses_two_sevenths_of_its_kinetic_energy_to_the_s
     sphere.position.z = RADIUS - sphere.mass * g / 1000.0;
     sphere.velocity.x = v0;
     let kinetic = 0.5 * sphere.mass * v0 * v0;
-    let mut scene = OwnedScene::<_, _>::new(vec![sphere], open_box(), (2.0 * RADIUS, 1e-4), floor)
+    let mut scene = OwnedScene::<_, _>::new(vec![sphere], open_box(), 1e-4, floor)
         .unwrap()
         .with_records();
     let dt = 2e-6;
@@ -438,7 +437,7 @@ fn pour_in_calls<L: Law<Float = f64>>(
         wall_of(ceiling, 1),
     ];
     let domain = column.domain(0.02);
-    let mut scene = OwnedScene::<_, _>::new(spheres, domain, (2.0 * RADIUS, 1e-4), walls)
+    let mut scene = OwnedScene::<_, _>::new(spheres, domain, 1e-4, walls)
         .unwrap()
         .with_records();
     let input = StepInput {

@@ -149,8 +149,7 @@ fn the_grid_finds_every_touching_pair_across_periodic_boundaries() {
             s.position += shift;
         }
         (domain.lower, domain.upper) = (domain.lower + shift, domain.upper + shift);
-        let mut scene =
-            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+        let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, NoWalls).unwrap();
         let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), Integrator::SymplecticEuler);
         let lengths = domain.upper - domain.lower;
@@ -176,8 +175,7 @@ fn an_isolated_periodic_gas_keeps_its_momentum_and_repeats_bit_for_bit() {
     let law = table();
     let run = |integrator| {
         let (spheres, domain) = gas(300, 9);
-        let mut scene =
-            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+        let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, NoWalls).unwrap();
         let m = scene.spheres()[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, m), integrator);
         let momentum = |s: &[CheckedSphere<f64>]| {
@@ -226,8 +224,7 @@ fn both_integrators_settle_a_bed_on_the_floor() {
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let (spheres, domain) = gas(150, 3);
         let potential: f64 = spheres.iter().map(|s| s.mass * 9.81 * s.position.z).sum();
-        let mut scene =
-            OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+        let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, floor).unwrap();
         let m = scene.spheres()[0].mass;
         let gravity = Vec3::new(0.0, 0.0, -9.81);
         let input = input(&law, (gravity, 4e-6, m), integrator);
@@ -317,8 +314,7 @@ fn the_stored_springs_survive_list_rebuilds_bit_for_bit() {
     );
     for (skin, calls) in [(1e-4, 1), (0.0, 1), (1e-4, steps)] {
         let mut scene =
-            OwnedScene::<Linear, _>::new(oblique_pair(), open_box(), (DIAMETER, skin), NoWalls)
-                .unwrap();
+            OwnedScene::<Linear, _>::new(oblique_pair(), open_box(), skin, NoWalls).unwrap();
         assert!(
             scene.spheres()[0].position.x < 1e-3,
             "sorted: A is sphere 0"
@@ -350,7 +346,7 @@ fn an_invalid_sphere_is_refused_when_the_scene_is_built() {
     for (spoil, error) in cases {
         let mut spheres = oblique_pair();
         spoil(&mut spheres[1]);
-        let result = OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls);
+        let result = OwnedScene::<Linear, _>::new(spheres, open_box(), 1e-4, NoWalls);
         assert_eq!(result.err(), Some(SceneError::Sphere { index: 1, error }));
     }
 }
@@ -583,8 +579,7 @@ fn a_failed_step_leaves_the_scene_as_it_was() {
     // A third sphere on top of the first: its contact has no normal.
     spheres.push(spheres[0]);
     let mass = spheres[0].mass;
-    let mut scene =
-        OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls).unwrap();
+    let mut scene = OwnedScene::<Linear, _>::new(spheres, open_box(), 1e-4, NoWalls).unwrap();
     let before = scene.spheres().to_vec();
     let input = input(&law, (Vec3::ZERO, 2e-6, mass), Integrator::SymplecticEuler);
     assert_eq!(
@@ -637,8 +632,7 @@ fn non_finite_gravity_is_refused_and_changes_nothing() {
             let spheres = oblique_pair();
             let mass = spheres[0].mass;
             let mut scene =
-                OwnedScene::<Linear, _>::new(spheres, open_box(), (DIAMETER, 1e-4), NoWalls)
-                    .unwrap();
+                OwnedScene::<Linear, _>::new(spheres, open_box(), 1e-4, NoWalls).unwrap();
             let before = scene.spheres().to_vec();
             let gravity = Vec3::new(0.0, bad, -9.81);
             let refused = input(&law, (gravity, 2e-6, mass), integrator);
@@ -673,8 +667,7 @@ fn threads_give_the_same_bits_as_one_thread() {
     for integrator in [Integrator::SymplecticEuler, Integrator::VelocityVerlet] {
         let run = |threads: Option<usize>| {
             let (spheres, domain) = gas(1000, 5);
-            let mut scene =
-                OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), walls).unwrap();
+            let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, walls).unwrap();
             let m = scene.spheres()[0].mass;
             let input = input(&law, (gravity, 4e-6, m), integrator);
             let mut contacts = Vec::new();
@@ -831,8 +824,7 @@ fn each_steps_totals_are_what_a_brute_force_search_finds() {
         .fold(f64::INFINITY, f64::min);
     let height = lowest - 0.45 * DIAMETER;
     let floor = wall(Vec3::new(0.0, 0.0, height), Vec3::new(0.0, 0.0, 1.0));
-    let mut scene =
-        OwnedScene::<Plain, _>::new(spheres, domain, (DIAMETER, 1e-4), [floor]).unwrap();
+    let mut scene = OwnedScene::<Plain, _>::new(spheres, domain, 1e-4, [floor]).unwrap();
     let m = scene.spheres()[0].mass;
     let plain_table = MaterialTable::<Plain, 1>::uniform(law);
     let input = StepInput {
@@ -923,8 +915,7 @@ fn the_list_is_rebuilt_when_a_sphere_has_moved_half_the_skin_or_crossed_the_box(
         let mass = spheres(x)[0].mass;
         let input = input(&law, (Vec3::ZERO, 2e-6, mass), integrator);
         let mut scene =
-            OwnedScene::<Linear, _>::new(spheres(x), open_box(), (DIAMETER, skin), NoWalls)
-                .unwrap();
+            OwnedScene::<Linear, _>::new(spheres(x), open_box(), skin, NoWalls).unwrap();
         scene.run(&input, steps, |_, _| {}).unwrap();
         scene.list_builds()
     };
@@ -1020,7 +1011,7 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
     let owned = OwnedScene::<Linear, NoWalls>::new(
         vec![Sphere::solid(Vec3::new(0.5, 0.5, 0.5), 5e-6, 2500.0)],
         unit,
-        (1e-5, 0.0),
+        0.0,
         NoWalls,
     );
     assert!(matches!(owned.err(), Some(SceneError::TooManyCells { .. })));
@@ -1098,8 +1089,7 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
         let mass = sphere.mass;
         let far = Sphere::solid(Vec3::new(0.5e-3, 0.5e-3, 0.5e-3), DIAMETER / 2.0, 2500.0);
         let mut scene =
-            OwnedScene::<Linear, _>::new(vec![sphere, far], open_box(), (DIAMETER, 1e-4), NoWalls)
-                .unwrap();
+            OwnedScene::<Linear, _>::new(vec![sphere, far], open_box(), 1e-4, NoWalls).unwrap();
         let input = input(&law, (Vec3::new(0.0, 0.0, -g), dt, mass), integrator);
         scene.run(&input, steps, |_, _| {}).unwrap();
         let moved = scene
@@ -1132,8 +1122,7 @@ fn a_sphere_in_free_fall_follows_each_integrators_closed_form() {
 fn a_diverging_sphere_is_named_by_its_index_whichever_thread_moved_it() {
     let law = table();
     let (spheres, domain) = gas(1000, 7);
-    let mut scene =
-        OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), NoWalls).unwrap();
+    let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, NoWalls).unwrap();
     let m = scene.spheres()[0].mass;
     // Far into the second half of the spheres, which a second thread advances.
     scene.spheres_mut()[900]
@@ -1167,13 +1156,7 @@ fn exact_motion(speed: f64, start_x: f64) -> (OwnedScene<Linear, NoWalls>, StepI
     moving.velocity = Vec3::new(speed, 0.0, 0.0);
     let resting = Sphere::solid(Vec3::new(0.0, 2.5e-3, 2.5e-3), DIAMETER / 2.0, 2500.0);
     let mass = moving.mass;
-    let scene = OwnedScene::new(
-        vec![moving, resting],
-        domain,
-        (DIAMETER, 2f64.powi(-13)),
-        NoWalls,
-    )
-    .unwrap();
+    let scene = OwnedScene::new(vec![moving, resting], domain, 2f64.powi(-13), NoWalls).unwrap();
     (scene, (2f64.powi(-19), mass))
 }
 
@@ -1253,8 +1236,7 @@ fn threads_keep_every_spheres_wall_history() {
     );
     // Serial (one stretch) against two threads (two stretches of the wall states).
     let run = |threads: Option<usize>| {
-        let mut scene =
-            OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), walls).unwrap();
+        let mut scene = OwnedScene::<Linear, _>::new(spheres.clone(), domain, 1e-4, walls).unwrap();
         let mut on_floor = 0;
         let record = |_: usize, s: &StepStats<f64>| on_floor = s.wall_contacts;
         match threads {
@@ -1431,8 +1413,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
             time_step,
             integrator: Integrator::SymplecticEuler,
         };
-        let mut scene =
-            OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+        let mut scene = OwnedScene::<Linear, _>::new(spheres.clone(), domain, 1e-4, floor).unwrap();
         let start = energy(&scene);
         let mut walls_touched = 0;
         let outcome = scene.run(&input, 20_000, |_, stats| {
@@ -1472,8 +1453,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
             .unwrap(),
         integrator: Integrator::SymplecticEuler,
     };
-    let mut scene =
-        OwnedScene::<Linear, _>::new(spheres.clone(), domain, (DIAMETER, 1e-4), floor).unwrap();
+    let mut scene = OwnedScene::<Linear, _>::new(spheres.clone(), domain, 1e-4, floor).unwrap();
     let outcome = scene.run(&input, 2_000, |_, _| {});
     assert!(
         matches!(
@@ -1488,7 +1468,7 @@ fn contacts_stiffer_than_the_step_stop_the_scene() {
     // The scene's own check of the step, from the spheres and walls present, refuses both
     // before a step is taken: the floor's law at a sphere's mass, then (with the floor's law
     // relaxed) the pairs' law at half a sphere's mass.
-    let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, (DIAMETER, 1e-4), floor).unwrap();
+    let mut scene = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, floor).unwrap();
     let checked = |scene: &mut OwnedScene<Linear, _>, table: &MaterialTable<Linear, 2>, dt| {
         scene.scene(|s| s.coarse_time_step(table, dt)).unwrap()
     };
@@ -1548,15 +1528,14 @@ fn a_large_sphere_among_many_small_ones_goes_on_with_a_larger_parking() {
         let input = input(&law, (Vec3::ZERO, 1e-7, small), Integrator::SymplecticEuler);
         scene.run(&input, 1, |_, _| {})
     };
-    let mut scene =
-        OwnedScene::<Linear, _>::new(spheres.clone(), domain, (8.0e-3, 1e-4), NoWalls).unwrap();
+    let mut scene = OwnedScene::<Linear, _>::new(spheres.clone(), domain, 1e-4, NoWalls).unwrap();
     assert_eq!(step(&mut scene), Ok(()));
     assert_eq!(step(&mut scene), Err(StepError::ParkingFull));
     assert!(StepError::ParkingFull.to_string().contains("with_parking"));
     // With room for 64, the same scene goes on, its history kept: the same bits as a scene
     // built with that room.
     let mut roomy = scene.with_parking::<64>();
-    let mut reference = OwnedScene::<Linear, _>::new(spheres, domain, (8.0e-3, 1e-4), NoWalls)
+    let mut reference = OwnedScene::<Linear, _>::new(spheres, domain, 1e-4, NoWalls)
         .unwrap()
         .with_parking::<64>();
     let input = input(&law, (Vec3::ZERO, 1e-7, small), Integrator::SymplecticEuler);
@@ -1569,8 +1548,9 @@ fn a_large_sphere_among_many_small_ones_goes_on_with_a_larger_parking() {
 }
 
 #[test]
-fn spheres_larger_than_declared_or_outside_the_box_are_refused() {
-    // Two 4 mm spheres declared as 1 mm met at 0.5 m/s and left at 2.11 m/s each.
+fn the_grid_is_sized_from_the_spheres_and_spheres_outside_the_box_are_refused() {
+    // Two 4 mm spheres declared as 1 mm met at 0.5 m/s and left at 2.11 m/s each: the owned
+    // scene now sizes its cells from the spheres, and they leave no faster than they came.
     let pair = |radius: f64| {
         let mut a = Sphere::solid(Vec3::new(2.0e-3, 2.5e-3, 2.5e-3), radius, 2500.0);
         let mut b = Sphere::solid(
@@ -1588,33 +1568,73 @@ fn spheres_larger_than_declared_or_outside_the_box_are_refused() {
         periodic_x: false,
         periodic_y: false,
     };
-    let built = |spheres: Vec<Sphere<f64>>, diameter: f64| {
-        OwnedScene::<Linear, NoWalls>::new(spheres, closed, (diameter, 1e-4), NoWalls).err()
+    let built = |spheres: Vec<Sphere<f64>>| {
+        OwnedScene::<Linear, NoWalls>::new(spheres, closed, 1e-4, NoWalls).err()
     };
-    assert_eq!(
-        built(pair(2.0e-3), 1.0e-3),
-        Some(SceneError::Diameter { index: 0 })
+    let law = table();
+    let fastest_after = |scene: &mut OwnedScene<Linear, NoWalls>| {
+        let mass = scene.spheres()[0].mass;
+        let input = input(&law, (Vec3::ZERO, 2e-5, mass), Integrator::VelocityVerlet);
+        scene.run(&input, 2000, |_, _| {}).unwrap();
+        let speeds = scene
+            .spheres()
+            .iter()
+            .map(|s| s.velocity.norm_squared().sqrt());
+        speeds.fold(0.0, f64::max)
+    };
+    let mut large =
+        OwnedScene::<Linear, NoWalls>::new(pair(2.0e-3), closed, 1e-4, NoWalls).unwrap();
+    let after = fastest_after(&mut large);
+    assert!(after > 0.0 && after <= 0.25, "left at {after} m/s");
+    // Spheres grown between calls: the next call sizes the cells for them.
+    let mut grown =
+        OwnedScene::<Linear, NoWalls>::new(pair(0.5e-3), closed, 1e-4, NoWalls).unwrap();
+    for (sphere, large) in grown.spheres_mut().iter_mut().zip(pair(2.0e-3)) {
+        *sphere = CheckedSphere::new(large).unwrap();
+    }
+    let after = fastest_after(&mut grown);
+    assert!(
+        after > 0.0 && after <= 0.25,
+        "grown spheres left at {after} m/s"
     );
-    assert_eq!(built(pair(2.0e-3), 4.0e-3), None);
     // A centre outside along a closed direction; along a periodic one it is the scene's to wrap.
     let mut outside = pair(0.5e-3);
     outside[1].position.z = -1e-3;
-    assert_eq!(
-        built(outside, 1.0e-3),
-        Some(SceneError::Outside { index: 1 })
-    );
+    assert_eq!(built(outside), Some(SceneError::Outside { index: 1 }));
     let mut beyond = pair(0.5e-3);
     beyond[0].position.y = 0.006;
     assert_eq!(
-        built(beyond.clone(), 1.0e-3),
+        built(beyond.clone()),
         Some(SceneError::Outside { index: 0 })
     );
     let periodic = Domain {
         periodic_y: true,
         ..closed
     };
-    let wrapped = OwnedScene::<Linear, NoWalls>::new(beyond, periodic, (1.0e-3, 1e-4), NoWalls);
+    let wrapped = OwnedScene::<Linear, NoWalls>::new(beyond, periodic, 1e-4, NoWalls);
     assert!(wrapped.is_ok());
+    // A scene over the caller's buffers has its cells sized by the diameter it was given, and
+    // refuses a larger sphere.
+    let mut buffers = pair_buffers(0);
+    let (materials, parts) = buffers.buffers();
+    let mut large = pair(2.0e-3)
+        .into_iter()
+        .map(|s| {
+            CheckedSphere::new(Sphere {
+                position: Vec3::new(s.position.x, 3e-3, 3e-3),
+                ..s
+            })
+            .unwrap()
+        })
+        .collect::<Vec<_>>();
+    let borrowed = Scene::<Linear, NoWalls, 4>::new(
+        open_box(),
+        (DIAMETER, 0.0),
+        (&mut large[..], materials),
+        parts,
+        NoWalls,
+    );
+    assert_eq!(borrowed.err(), Some(SceneError::Diameter { index: 0 }));
     assert!(
         SceneError::Diameter { index: 3 }
             .to_string()
@@ -1624,5 +1644,44 @@ fn spheres_larger_than_declared_or_outside_the_box_are_refused() {
         SceneError::Outside { index: 3 }
             .to_string()
             .contains("outside")
+    );
+}
+
+#[test]
+fn a_sphere_flying_out_of_the_box_is_named() {
+    // Nothing above the spheres: the second flies up out of the closed z direction. It used to
+    // fly on in the top cells, its contacts still computed.
+    let resting = Sphere::solid(Vec3::new(3e-3, 3e-3, 1e-3), DIAMETER / 2.0, 2500.0);
+    let mut rising = Sphere::solid(Vec3::new(1e-3, 1e-3, 3e-3), DIAMETER / 2.0, 2500.0);
+    rising.velocity.z = 1.0;
+    let mut scene =
+        OwnedScene::<Linear, _>::new(vec![resting, rising], open_box(), 1e-4, NoWalls).unwrap();
+    let law = table();
+    let input = input(
+        &law,
+        (Vec3::ZERO, 1e-6, resting.mass),
+        Integrator::SymplecticEuler,
+    );
+    let mut steps = 0;
+    let outcome = scene.run(&input, 4000, |_, _| steps += 1);
+    assert_eq!(outcome, Err(StepError::Outside { index: 1 }));
+    // Found within half a skin of the top, after about 3 mm at 1 µm a step.
+    let z = scene.spheres()[1].position.z;
+    assert!(z > 6e-3 && z <= 6e-3 + 0.5e-4 + 1e-6, "found at {z}");
+    assert!((3000..=3051).contains(&steps), "{steps} steps");
+    // Refused again, when the owned scene is built for the next call, until it is back
+    // inside; then the scene steps on.
+    assert_eq!(
+        scene.run(&input, 1, |_, _| {}),
+        Err(StepError::Scene(SceneError::Outside { index: 1 }))
+    );
+    scene.spheres_mut()[1]
+        .update(|s| s.position.z = 5e-3)
+        .unwrap();
+    assert_eq!(scene.run(&input, 1, |_, _| {}), Ok(()));
+    assert!(
+        StepError::Outside { index: 1 }
+            .to_string()
+            .contains("sphere 1")
     );
 }

@@ -79,7 +79,7 @@ fn mixture() -> (OwnedScene<Plain, [MaterialWall<f64>; 2]>, Domain<f64>) {
         .map(|_| u32::from(random.unit() < 0.5))
         .collect();
     let domain = column.domain(height);
-    let scene = OwnedScene::new(spheres, domain, (DIAMETER, 1e-4), [floor, ceiling])
+    let scene = OwnedScene::new(spheres, domain, 1e-4, [floor, ceiling])
         .unwrap()
         .with_materials(materials)
         .unwrap()
@@ -233,7 +233,7 @@ fn material_ids_past_the_table_are_refused_with_their_sphere_or_wall() {
     let floor = scene.walls()[0];
     let mut materials = scene.materials().to_vec();
     materials[7] = 2;
-    let mut bad = OwnedScene::new(spheres.clone(), domain, (DIAMETER, 1e-4), [floor])
+    let mut bad = OwnedScene::new(spheres.clone(), domain, 1e-4, [floor])
         .unwrap()
         .with_materials(materials)
         .unwrap();
@@ -261,7 +261,7 @@ fn material_ids_past_the_table_are_refused_with_their_sphere_or_wall() {
         material: 5,
         ..floor
     };
-    let mut bad_wall = OwnedScene::new(spheres, domain, (DIAMETER, 1e-4), [far_wall]).unwrap();
+    let mut bad_wall = OwnedScene::new(spheres, domain, 1e-4, [far_wall]).unwrap();
     assert_eq!(
         bad_wall.run(&input, 1, |_, _| {}),
         Err(StepError::WallMaterial {
@@ -270,7 +270,7 @@ fn material_ids_past_the_table_are_refused_with_their_sphere_or_wall() {
         })
     );
     assert_eq!(
-        OwnedScene::<Plain, _>::new(vec![], domain, (DIAMETER, 1e-4), [floor])
+        OwnedScene::<Plain, _>::new(vec![], domain, 1e-4, [floor])
             .unwrap()
             .with_materials(vec![0])
             .err(),
@@ -318,7 +318,7 @@ fn a_scene_without_records_has_no_view_and_no_account() {
     let table = table();
     let (scene, _) = mixture();
     let spheres: Vec<Sphere<f64>> = scene.spheres().iter().map(|s| s.into_inner()).collect();
-    let mut plain = OwnedScene::new(spheres, *scene.domain(), (DIAMETER, 1e-4), *scene.walls())
+    let mut plain = OwnedScene::new(spheres, *scene.domain(), 1e-4, *scene.walls())
         .unwrap()
         .with_materials(scene.materials().to_vec())
         .unwrap();

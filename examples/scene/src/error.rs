@@ -137,6 +137,14 @@ pub enum StepError {
         /// The first sphere that diverged.
         index: usize,
     },
+    /// Sphere `index`'s centre was found outside the domain along a direction that is not
+    /// periodic when the Verlet list was rebuilt (it flew out through an open side, or through
+    /// a wall too soft for its speed). The history is as before the step; the scene refuses to
+    /// step until that sphere is back inside.
+    Outside {
+        /// The sphere.
+        index: usize,
+    },
     /// An earlier step diverged; the scene does not step again.
     Halted,
     /// The step's gravity is not finite. Refused before anything changes.
@@ -217,6 +225,10 @@ impl fmt::Display for StepError {
                      (OwnedScene::with_parking gives it more room, keeping the history)",
             ),
             Self::Diverged { index } => write!(f, "sphere {index} diverged to a non-finite state"),
+            Self::Outside { index } => write!(
+                f,
+                "sphere {index} has left the domain through a side that is not periodic"
+            ),
             Self::Halted => f.write_str("an earlier step diverged; the scene has stopped"),
             Self::Gravity => f.write_str("the step's gravity is not finite"),
             Self::Scene(error) => write!(f, "the scene could not be built: {error}"),

@@ -193,23 +193,25 @@ fn check_placement<F: Float>(
     domain: &Domain<F>,
     largest_diameter: F,
 ) -> Result<(), SceneError> {
-    let closed = [!domain.periodic_x, !domain.periodic_y, true];
     for (index, sphere) in spheres.iter().enumerate() {
         if sphere.radius + sphere.radius > largest_diameter {
             return Err(SceneError::Diameter { index });
         }
-        let (p, lo, hi) = (
-            sphere.position.to_array(),
-            domain.lower.to_array(),
-            domain.upper.to_array(),
-        );
-        for axis in 0..3 {
-            if closed[axis] && !(p[axis] >= lo[axis] && p[axis] <= hi[axis]) {
-                return Err(SceneError::Outside { index });
-            }
-        }
     }
-    Ok(())
+    match first_outside(spheres, domain) {
+        Some(index) => Err(SceneError::Outside { index }),
+        None => Ok(()),
+    }
+}
+
+/// The first sphere whose centre is outside the domain along a direction that is not periodic.
+fn first_outside<F: Float>(spheres: &[CheckedSphere<F>], domain: &Domain<F>) -> Option<usize> {
+    let closed = [!domain.periodic_x, !domain.periodic_y, true];
+    let (lo, hi) = (domain.lower.to_array(), domain.upper.to_array());
+    spheres.iter().position(|sphere| {
+        let p = sphere.position.to_array();
+        (0..3).any(|axis| closed[axis] && !(p[axis] >= lo[axis] && p[axis] <= hi[axis]))
+    })
 }
 
 /// True when the law keeps a per-contact state: a stateless law's scene parks none.
@@ -428,6 +430,11 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// to its new place in the list (through the parking, so a sphere can own at most `K`).
     /// A failed build leaves the history in the list, as a list of the stored pairs.
     fn rebuild_list(&mut self) -> Result<(), StepError> {
+        // A sphere that has flown out of the box would sit in an edge cell while it flies on,
+        // its contacts with the box's spheres still computed: refused before anything changes.
+        if let Some(index) = first_outside(self.spheres, &self.grid.domain) {
+            return Err(StepError::Outside { index });
+        }
         let relaxed = L::State::default();
         let old_count = self.candidate_count;
         if stores::<L::State>() {

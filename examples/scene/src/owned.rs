@@ -43,7 +43,7 @@ pub const PARKING: usize = 16;
 ///     lower: Vec3::ZERO, upper: Vec3::new(0.01, 0.01, 0.01), periodic_x: true, periodic_y: true,
 /// };
 /// let drop = Sphere::solid(Vec3::new(0.005, 0.005, 6.0e-4), 5.0e-4, 2500.0);
-/// let mut scene = OwnedScene::new(vec![drop], domain, (1.0e-3, 1.0e-4), [floor])
+/// let mut scene = OwnedScene::new(vec![drop], domain, 1.0e-4, [floor])
 ///     .unwrap()
 ///     .with_records();
 /// let time_step = scene.scene(|s| s.time_step(&table, 5.0e-7)).unwrap().unwrap();
@@ -63,7 +63,6 @@ pub struct OwnedScene<L: Law, W, const K: usize = PARKING> {
     materials: Vec<u32>,
     walls: W,
     domain: Domain<L::Float>,
-    largest_diameter: L::Float,
     skin: L::Float,
     cells: Vec<u32>,
     pairs: Vec<[u32; 2]>,
@@ -80,41 +79,36 @@ pub struct OwnedScene<L: Law, W, const K: usize = PARKING> {
 }
 
 impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
-    /// A scene of `spheres` (all of material 0) in `domain` with `walls`, a Verlet list with
-    /// `skin`, and spheres no larger than `largest_diameter`.
+    /// A scene of `spheres` (all of material 0) in `domain` with `walls` and a Verlet list with
+    /// `skin`. The grid's cells are sized from the spheres' largest diameter, found again at
+    /// every [`OwnedScene::scene`] call (spheres changed between calls resize them).
     ///
     /// # Errors
     /// [`SceneError::Sphere`] for the first invalid sphere; [`SceneError::Domain`] for a bad
     /// domain or skin; [`SceneError::TooManyCells`] for a domain too finely cut;
-    /// [`SceneError::Diameter`] / [`SceneError::Outside`] for the first sphere larger than
-    /// `largest_diameter` or outside the domain.
+    /// [`SceneError::Outside`] for the first sphere outside the domain.
     pub fn new(
         spheres: Vec<Sphere<L::Float>>,
         domain: Domain<L::Float>,
-        (largest_diameter, skin): (L::Float, L::Float),
+        skin: L::Float,
         walls: W,
     ) -> Result<Self, SceneError> {
         let spheres = check_spheres(spheres).collect::<Result<Vec<_>, _>>()?;
         let n = spheres.len();
         let capacity = PAIRS_PER_SPHERE * n + 64;
-        let sizes = Scene::<L, W, PARKING>::buffer_sizes(
-            &domain,
-            (largest_diameter, skin),
-            n,
-            capacity,
-            false,
-        )?;
+        let largest = largest_diameter(&spheres, &domain);
+        let sizes =
+            Scene::<L, W, PARKING>::buffer_sizes(&domain, (largest, skin), n, capacity, false)?;
         let skin_ok = skin >= soft_sphere::Float::ZERO && soft_sphere::Float::is_finite(skin);
         if !skin_ok {
             return Err(SceneError::Domain);
         }
-        crate::check_placement(&spheres, &domain, largest_diameter)?;
+        crate::check_placement(&spheres, &domain, largest)?;
         Ok(Self {
             spheres,
             materials: vec![0; n],
             walls,
             domain,
-            largest_diameter,
             skin,
             cells: vec![0; sizes.cells],
             pairs: vec![[0; 2]; sizes.pairs],
@@ -143,7 +137,6 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
             materials: self.materials,
             walls: self.walls,
             domain: self.domain,
-            largest_diameter: self.largest_diameter,
             skin: self.skin,
             cells: self.cells,
             pairs: self.pairs,
@@ -186,7 +179,10 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
     /// not in a later call).
     ///
     /// # Errors
-    /// [`StepError::Halted`] after a step diverged.
+    /// [`StepError::Halted`] after a step diverged; [`StepError::Scene`] when the spheres as
+    /// changed through [`OwnedScene::spheres_mut`] no longer fit the domain (one outside it,
+    /// [`SceneError::Outside`], or so small that its grid would hold too many cells,
+    /// [`SceneError::TooManyCells`]).
     pub fn scene<R>(
         &mut self,
         work: impl FnOnce(&mut Scene<'_, L, W, K>) -> R,
@@ -194,6 +190,17 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
         if self.halted {
             return Err(StepError::Halted);
         }
+        // The grid follows the spheres as they are now: a sphere grown since the last call
+        // gets cells that hold its contacts.
+        let largest = largest_diameter(&self.spheres, &self.domain);
+        let sizes = Scene::<L, W, K>::buffer_sizes(
+            &self.domain,
+            (largest, self.skin),
+            self.spheres.len(),
+            self.pairs.len(),
+            false,
+        )?;
+        self.cells.resize(sizes.cells, 0);
         let buffers = SceneBuffers {
             cells: &mut self.cells,
             pairs: &mut self.pairs,
@@ -205,7 +212,7 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
         };
         let mut scene = Scene::new(
             self.domain,
-            (self.largest_diameter, self.skin),
+            (largest, self.skin),
             (&mut self.spheres, &self.materials),
             buffers,
             self.walls.clone(),
@@ -285,4 +292,18 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
     pub fn list_builds(&self) -> usize {
         self.list_builds
     }
+}
+
+/// The diameter that sizes an owned scene's cells: its largest sphere's, or, with no sphere, a
+/// quarter of the domain's shortest side (cells of any size hold no contact; a periodic
+/// direction needs three).
+fn largest_diameter<F: soft_sphere::Float>(spheres: &[CheckedSphere<F>], domain: &Domain<F>) -> F {
+    if spheres.is_empty() {
+        let [x, y, z] = (domain.upper - domain.lower).to_array();
+        let quarter = F::HALF * F::HALF;
+        return x.min_of(y).min_of(z) * quarter;
+    }
+    spheres
+        .iter()
+        .fold(F::ZERO, |largest, s| largest.max_of(s.radius + s.radius))
 }

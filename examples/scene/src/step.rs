@@ -85,6 +85,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     ///   the list buffers still hold every stored state, so copying them to the front of longer
     ///   ones (or keeping them with a larger parking) and building a scene again carries on
     ///   from the same history.
+    /// - [`StepError::Outside`] for the first sphere found outside the domain along a closed
+    ///   direction when the list is rebuilt (at the latest once it has moved half the skin);
+    ///   the history is as before, and the spheres as for a refused contact.
     /// - [`StepError::Diverged`] when finite forces moved a sphere to a non-finite position or
     ///   velocity; that sphere keeps its previous state, and every later step returns
     ///   [`StepError::Halted`].

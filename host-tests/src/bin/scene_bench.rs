@@ -118,12 +118,7 @@ fn settled(column: &Column) -> Result<Packing, Box<dyn Error>> {
         cache.display()
     );
     let mass = lattice[0].mass;
-    let mut scene = OwnedScene::new(
-        lattice,
-        column.domain(height),
-        (column.diameter, SKIN),
-        floor(),
-    )?;
+    let mut scene = OwnedScene::new(lattice, column.domain(height), SKIN, floor())?;
     let settle_e = 0.3;
     let law = ContactLaw::new(
         LinearSpringDashpot::new(NORMAL_STIFFNESS, settle_e)?,
@@ -186,7 +181,7 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
         let mut scene = OwnedScene::<L, W>::new(
             spheres.to_vec(),
             o.column.domain(height),
-            (o.column.diameter, SKIN),
+            SKIN,
             walls.clone(),
         )?
         .with_materials(materials.to_vec())?;
@@ -289,13 +284,8 @@ fn run_mixture(
         .map(|_| u32::from(random.unit() < 0.5))
         .collect();
     let walls = [wall_of(Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?, 2)];
-    let mut probe = OwnedScene::new(
-        spheres.to_vec(),
-        o.column.domain(height),
-        (o.column.diameter, SKIN),
-        walls,
-    )?
-    .with_materials(materials.clone())?;
+    let mut probe = OwnedScene::new(spheres.to_vec(), o.column.domain(height), SKIN, walls)?
+        .with_materials(materials.clone())?;
     let time_step = probe.scene(|s| s.time_step(&table, TIME_STEP))??;
     let input = StepInput {
         table: &table,

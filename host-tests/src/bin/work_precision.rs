@@ -237,7 +237,7 @@ fn shaken_bed() -> Result<Bed, Box<dyn Error>> {
     let walls = [wall_of(Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0))?, 1)];
     let mass = lattice[0].mass;
     let [law, wall_law] = scene_laws::<f64, Libm>(0.3, mass);
-    let mut bed = OwnedScene::new(lattice, domain, (BED.diameter, BED_SKIN), walls)?;
+    let mut bed = OwnedScene::new(lattice, domain, BED_SKIN, walls)?;
     let table = pair_and_wall(law, wall_law);
     let input = StepInput {
         table: &table,
@@ -304,12 +304,7 @@ fn shake<F: Float, M: MathBackend<F>>(
     let (mut runs, mut spent) = (0, 0.0);
     while runs < repeats || spent < 0.5 {
         runs += 1;
-        let mut scene = OwnedScene::new(
-            spheres.clone(),
-            domain,
-            (f(BED.diameter), f(BED_SKIN)),
-            walls,
-        )?;
+        let mut scene = OwnedScene::new(spheres.clone(), domain, f(BED_SKIN), walls)?;
         let (mut overlap, mut contacts) = (0.0, 0);
         let start = Instant::now();
         scene.run(&input, steps, |_, s| {
