@@ -401,7 +401,19 @@ fn try_evaluate(
     walls: &[MaterialWall<f64>],
     dt: soft_sphere::TimeStep<f64>,
 ) -> Result<(), ListError> {
-    let outcomes = ROUTES.map(|route| try_route(route, t, arrays, pairs, walls, dt));
+    try_evaluate_loaded(t, arrays, (pairs, walls), dt, None)
+}
+
+/// [`try_evaluate`] with sphere `poisoned.0`'s force (or, when `poisoned.1`, torque) made NaN
+/// before the call, as a caller's array might hold it.
+fn try_evaluate_loaded(
+    t: &MaterialTable<Linear, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    (pairs, walls): (&[[u32; 2]], &[MaterialWall<f64>]),
+    dt: soft_sphere::TimeStep<f64>,
+    poisoned: Option<(usize, bool)>,
+) -> Result<(), ListError> {
+    let outcomes = ROUTES.map(|route| try_route(route, t, arrays, (pairs, walls), dt, poisoned));
     assert!(outcomes.iter().all(|o| *o == outcomes[0]), "{outcomes:?}");
     outcomes[0]
 }
@@ -424,9 +436,9 @@ fn try_route(
     route: Route,
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
-    pairs: &[[u32; 2]],
-    walls: &[MaterialWall<f64>],
+    (pairs, walls): (&[[u32; 2]], &[MaterialWall<f64>]),
     dt: soft_sphere::TimeStep<f64>,
+    poisoned: Option<(usize, bool)>,
 ) -> Result<(), ListError> {
     let n = arrays.len();
     let preload = |k: usize| State {
@@ -436,6 +448,11 @@ fn try_route(
     let mut wall_states: Vec<State> = (0..n * walls.len()).map(preload).collect();
     let mut force: Vec<_> = (0..n).map(|k| Vec3::new(k as f64, 1.0, 2.0)).collect();
     let mut torque = force.clone();
+    match poisoned {
+        Some((k, false)) => force[k].y = f64::NAN,
+        Some((k, true)) => torque[k].z = f64::INFINITY,
+        None => {}
+    }
     let before = bits(&(&states, &wall_states, &force, &torque));
     let contacts = pairs.len() + n * walls.len();
     let mut records = vec![Interaction::Apart; contacts];
@@ -622,6 +639,14 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         assert_eq!(
             try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
             Err(ListError::Sphere { sphere: 11, error })
+        );
+    }
+    // A NaN or an infinity already in the caller's force or torque array (it passed through
+    // every sum).
+    for torque in [false, true] {
+        assert_eq!(
+            try_evaluate_loaded(&t, &m.arrays(), (&m.pairs, &walls), dt, Some((13, torque))),
+            Err(ListError::Load { sphere: 13 })
         );
     }
     // A pair naming a sphere past the arrays.
@@ -1045,6 +1070,10 @@ fn every_list_and_table_error_says_where_and_why() {
             }
             .to_string(),
             vec!["sphere 11", "mass"],
+        ),
+        (
+            ListError::Load { sphere: 4 }.to_string(),
+            vec!["sphere 4", "not finite"],
         ),
         (
             ListError::PairIndex { pair: 3 }.to_string(),

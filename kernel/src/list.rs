@@ -194,6 +194,12 @@ pub enum ListError {
         /// What is wrong with it.
         error: ContactError,
     },
+    /// Sphere `sphere`'s force or torque, as given to be added to, is not finite: a NaN or an
+    /// infinity the caller's arrays already held would pass through every sum.
+    Load {
+        /// The sphere.
+        sphere: usize,
+    },
     /// Pair `pair` names a sphere past the arrays.
     PairIndex {
         /// The pair's place in the list.
@@ -242,6 +248,10 @@ impl core::fmt::Display for ListError {
                 write!(f, "wall {wall}'s material {material} is past the table")
             }
             Self::Sphere { sphere, error } => write!(f, "sphere {sphere}: {error}"),
+            Self::Load { sphere } => write!(
+                f,
+                "sphere {sphere}'s force or torque is not finite before the contacts are added"
+            ),
             Self::PairIndex { pair } => write!(f, "pair {pair} names a sphere past the arrays"),
             Self::Shift { pair } => write!(f, "pair {pair}'s shift is not finite"),
             Self::Pair { pair, error } => write!(f, "pair {pair}: {error}"),
@@ -466,7 +476,8 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// In this order, the first failure winning; nothing the caller gave is changed (states,
     /// forces, torques; the records and the backup are then unspecified):
     /// [`ListError::Length`] for an array of the wrong length; [`ListError::Material`] /
-    /// [`ListError::Sphere`] for the first bad sphere; [`ListError::WallMaterial`];
+    /// [`ListError::Sphere`] for the first bad sphere; [`ListError::Load`] for the first
+    /// sphere whose force or torque is not finite as given; [`ListError::WallMaterial`];
     /// [`ListError::PairIndex`] for the first pair past the arrays; [`ListError::Pair`] and
     /// [`ListError::Wall`] for the first refused contact, in list order.
     pub fn evaluate(
@@ -565,6 +576,10 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             return Err(ListError::Length(array));
         }
         check_materials::<_, MATERIALS>(spheres)?;
+        let finite = |k: &usize| out.force[*k].is_finite() && out.torque[*k].is_finite();
+        if let Some(sphere) = (0..n).find(|k| !finite(k)) {
+            return Err(ListError::Load { sphere });
+        }
         check_walls::<_, MATERIALS>(walls)?;
         if let Some(pair) = pairs
             .iter()

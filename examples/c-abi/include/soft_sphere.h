@@ -50,7 +50,8 @@
 #define SS_ERR_UNKNOWN_MODEL 7
 
 /**
- * A position, velocity, radius or mass is not finite.
+ * A position, velocity, radius or mass is not finite (or, for the table entries, a force or
+ * torque given to be added to).
  */
 #define SS_ERR_NON_FINITE_INPUT 8
 
@@ -1807,7 +1808,9 @@ int32_t ss_table_prepare_f64(ss_table_f64 *table,
  * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
  * error nothing is written but `*report`, which names the atoms (indices) it is
  * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
- * `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+ * `SS_ERR_NOT_PREPARED`, `SS_ERR_NON_FINITE_INPUT` for an atom whose force or torque
+ * in `*loads` is not finite before anything is added (a NaN there would pass through
+ * every sum), or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
  * `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
  * memory).
  *
@@ -1831,8 +1834,9 @@ int32_t ss_table_evaluate_f64(ss_table_f64 *table,
  * selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
  * of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
  * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
- * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
- * contact's code. One thread at a time per table.
+ * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`,
+ * `SS_ERR_NON_FINITE_INPUT` for an owned atom whose force or torque in `*loads` is not
+ * finite, or a contact's code. One thread at a time per table.
  *
  * # Safety
  * Every array must hold what its field says (`loads->pair_force` is not read); the
@@ -2099,7 +2103,9 @@ int32_t ss_table_prepare_f32(ss_table_f32 *table,
  * (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
  * error nothing is written but `*report`, which names the atoms (indices) it is
  * about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
- * `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+ * `SS_ERR_NOT_PREPARED`, `SS_ERR_NON_FINITE_INPUT` for an atom whose force or torque
+ * in `*loads` is not finite before anything is added (a NaN there would pass through
+ * every sum), or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
  * `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
  * memory).
  *
@@ -2123,8 +2129,9 @@ int32_t ss_table_evaluate_f32(ss_table_f32 *table,
  * selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
  * of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
  * nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
- * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
- * contact's code. One thread at a time per table.
+ * `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`,
+ * `SS_ERR_NON_FINITE_INPUT` for an owned atom whose force or torque in `*loads` is not
+ * finite, or a contact's code. One thread at a time per table.
  *
  * # Safety
  * Every array must hold what its field says (`loads->pair_force` is not read); the

@@ -19,7 +19,8 @@ pub const SS_ERR_RESTITUTION: i32 = 5;
 pub const SS_ERR_UNSTABLE_TIME_STEP: i32 = 6;
 /// Unknown model code.
 pub const SS_ERR_UNKNOWN_MODEL: i32 = 7;
-/// A position, velocity, radius or mass is not finite.
+/// A position, velocity, radius or mass is not finite (or, for the table entries, a force or
+/// torque given to be added to).
 pub const SS_ERR_NON_FINITE_INPUT: i32 = 8;
 /// A radius is not positive.
 pub const SS_ERR_NON_POSITIVE_RADIUS: i32 = 9;

@@ -285,7 +285,9 @@ macro_rules! entry_points {
         /// (LAMMPS's setup evaluation passes 0). Every count and index is checked first; on any
         /// error nothing is written but `*report`, which names the atoms (indices) it is
         /// about: `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX`, `SS_ERR_MATERIAL`,
-        /// `SS_ERR_NOT_PREPARED`, or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
+        /// `SS_ERR_NOT_PREPARED`, `SS_ERR_NON_FINITE_INPUT` for an atom whose force or torque
+        /// in `*loads` is not finite before anything is added (a NaN there would pass through
+        /// every sum), or a contact's code (`SS_ERR_NON_FINITE_INPUT`, ...,
         /// `SS_ERR_PAST_STABLE_STEP`). One thread at a time per table (it keeps its working
         /// memory).
         ///
@@ -315,8 +317,9 @@ macro_rules! entry_points {
         /// selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
         /// of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
         /// nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
-        /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`, or a
-        /// contact's code. One thread at a time per table.
+        /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`,
+        /// `SS_ERR_NON_FINITE_INPUT` for an owned atom whose force or torque in `*loads` is not
+        /// finite, or a contact's code. One thread at a time per table.
         ///
         /// # Safety
         /// Every array must hold what its field says (`loads->pair_force` is not read); the

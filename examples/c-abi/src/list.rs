@@ -8,8 +8,8 @@ use soft_sphere::{
 };
 
 use crate::{
-    Flat, SS_ERR_NULL, SS_ERR_UNSTABLE_TIME_STEP, SS_OK, contact_code, forces_of, ss_forces,
-    ss_sphere,
+    Flat, SS_ERR_NON_FINITE_INPUT, SS_ERR_NULL, SS_ERR_UNSTABLE_TIME_STEP, SS_OK, contact_code,
+    forces_of, ss_forces, ss_sphere,
 };
 
 use crate::table::*;
@@ -121,6 +121,12 @@ where
         let n = atoms.count;
         if !present(loads.force, n) || !present(loads.torque, n) {
             return SS_ERR_NULL;
+        }
+        let receivers = if loads.newton == 1 { n } else { atoms.owned };
+        // SAFETY: three numbers per atom in each.
+        if let Some(k) = unsafe { first_unfinite_load(loads, receivers) } {
+            report.atoms = [k as i64, -1];
+            return SS_ERR_NON_FINITE_INPUT;
         }
         let vectors = |p: *const F| -> &[Vec3<F>] {
             if n == 0 {
@@ -280,7 +286,6 @@ where
                 place.copy_from_slice(&[on_i.x, on_i.y, on_i.z]);
             }
         }
-        let receivers = if loads.newton == 1 { n } else { atoms.owned };
         for (out, sums) in [(loads.force, &work.force), (loads.torque, &work.torque)] {
             // SAFETY: three numbers per atom; not overlapping the inputs (the caller's promise).
             let out = unsafe { std::slice::from_raw_parts_mut(out, 3 * n) };
@@ -326,6 +331,11 @@ where
         }
         if n > atoms.count || n > u32::MAX as usize {
             return SS_ERR_LENGTH;
+        }
+        // SAFETY: three numbers per atom in each.
+        if let Some(k) = unsafe { first_unfinite_load(loads, n) } {
+            report.atoms = [k as i64, -1];
+            return SS_ERR_NON_FINITE_INPUT;
         }
         let needed = if walls.count == 0 {
             0
@@ -541,6 +551,21 @@ where
 }
 
 /// The code of a seam refusal, with the atoms it is about.
+/// The first of the first `count` atoms whose force or torque, which the contacts are added
+/// to, is not finite: a NaN the host's arrays already hold would pass through every sum.
+///
+/// # Safety
+/// `loads.force` and `loads.torque` hold three numbers for each of `count` atoms.
+unsafe fn first_unfinite_load<F: Float>(loads: &ss_loads<F>, count: usize) -> Option<usize> {
+    (0..count).find(|&k| {
+        (3 * k..3 * k + 3).any(|at| {
+            // SAFETY: the caller's promise.
+            let (force, torque) = unsafe { (*loads.force.add(at), *loads.torque.add(at)) };
+            !(force.is_finite() && torque.is_finite())
+        })
+    })
+}
+
 pub(crate) fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_list_report) -> i32 {
     let atoms = |pair: usize| pairs[pair].map(i64::from);
     match error {
@@ -551,6 +576,10 @@ pub(crate) fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_li
         ListError::Pair { pair, error } => {
             report.atoms = atoms(pair);
             contact_code(error)
+        }
+        ListError::Load { sphere } => {
+            report.atoms = [sphere as i64, -1];
+            SS_ERR_NON_FINITE_INPUT
         }
         ListError::PairIndex { pair } => {
             report.atoms = atoms(pair);

@@ -118,7 +118,7 @@ pub extern "C" fn ss_parameter_error_text(code: i32) -> *const c_char {
 #[unsafe(no_mangle)]
 pub extern "C" fn ss_contact_error_text(code: i32) -> *const c_char {
     text(match code {
-        SS_ERR_NON_FINITE_INPUT => b"a position, velocity, radius or mass is not finite\0",
+        SS_ERR_NON_FINITE_INPUT => b"a position, velocity, radius, mass, or force or torque to add to, is not finite\0",
         SS_ERR_NON_POSITIVE_RADIUS => b"a radius is not positive\0",
         SS_ERR_NON_POSITIVE_MASS => b"a mass is not positive\0",
         SS_ERR_COINCIDENT_CENTRES => b"the two centres coincide\0",

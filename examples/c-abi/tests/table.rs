@@ -620,6 +620,31 @@ fn bad_atoms_and_indices_name_the_atoms() {
     let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
     assert_eq!((code, report.atoms), (SS_ERR_NON_FINITE_INPUT, [12, -1]));
     assert_eq!(bits(&host.force), bits(&before.force));
+    // A NaN or an infinity already in a force or torque the contacts would be added to (it
+    // passed through every sum): the atom named, nothing changed. A ghost's is not added to
+    // without Newton's third law, and not read.
+    for (newton, at, code) in [
+        (1, 3 * 20 + 2, SS_ERR_NON_FINITE_INPUT),
+        (0, 3 * 50, SS_OK),
+        (1, 3 * 50, SS_ERR_NON_FINITE_INPUT),
+    ] {
+        for torque in [false, true] {
+            let mut host = Host::new(9, 4);
+            if torque {
+                host.torque[at] = f64::INFINITY;
+            } else {
+                host.force[at] = f64::NAN;
+            }
+            let before = host.clone();
+            let (got, report) = host.evaluate(table, newton, 1, |_, _, _| {});
+            assert_eq!(got, code, "newton {newton}, at {at}");
+            if code != SS_OK {
+                assert_eq!(report.atoms, [at as i64 / 3, -1]);
+                assert_eq!(bits(&host.force), bits(&before.force));
+                assert_eq!(bits(&host.torque), bits(&before.torque));
+            }
+        }
+    }
     let mut host = Host::new(9, 4);
     host.mass[50] = 0.0;
     let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});
@@ -1364,6 +1389,23 @@ fn walls_give_the_single_wall_calls_bits() {
         };
         assert_eq!(code, SS_ERR_BAD_WALL);
         assert_eq!((host.force.clone(), states.clone()), before);
+        // A NaN already in an owned atom's force: refused, naming the atom, nothing written.
+        // SAFETY: atom 2's force, inside the array.
+        unsafe { *loads.force.add(3 * 2 + 1) = f64::NAN };
+        let before = (bits(&host.force), bits(&states));
+        // SAFETY: as above.
+        let code = unsafe {
+            ss_table_evaluate_walls_f64(
+                table,
+                &atoms,
+                &ss_walls_of(&mut states),
+                &loads,
+                1,
+                &mut report,
+            )
+        };
+        assert_eq!((code, report.atoms), (SS_ERR_NON_FINITE_INPUT, [2, -1]));
+        assert_eq!((bits(&host.force), bits(&states)), before);
         // SAFETY: from ss_table_new_f64.
         unsafe { ss_table_free_f64(table) };
     }
