@@ -95,7 +95,7 @@
  * The time step is stable but at or past the law's accuracy limit: a contact could rebound
  * more than 0.02 of its impact speed off the law's restitution.
  */
-#define SS_ERR_INACCURATE_TIME_STEP 16
+#define SS_ERR_INACCURATE_TIME_STEP 20
 
 /**
  * The stateless (simplified) law: no tangential history is read or written.

@@ -39,7 +39,7 @@ pub const SS_ERR_POISSON_RATIO: i32 = 14;
 pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 /// The time step is stable but at or past the law's accuracy limit: a contact could rebound
 /// more than 0.02 of its impact speed off the law's restitution.
-pub const SS_ERR_INACCURATE_TIME_STEP: i32 = 16;
+pub const SS_ERR_INACCURATE_TIME_STEP: i32 = 20;
 
 // The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_MICROSLIP: registry.rs's list.
 /// Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.

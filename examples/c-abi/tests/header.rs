@@ -180,3 +180,25 @@ fn header_is_current() {
         );
     }
 }
+
+/// Every error code is its own number: a host tells them apart by value alone (the accuracy
+/// limit's code once took the list entry's length code's value).
+#[test]
+fn error_codes_are_distinct() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("include/soft_sphere.h");
+    let header = std::fs::read_to_string(path).unwrap();
+    let mut codes: Vec<(i64, &str)> = header
+        .lines()
+        .filter_map(|line| line.strip_prefix("#define SS_ERR_"))
+        .map(|rest| {
+            let (name, value) = rest.split_once(' ').unwrap();
+            (value.trim().parse().unwrap(), name)
+        })
+        .collect();
+    assert!(codes.len() >= 19, "{codes:?}");
+    codes.sort();
+    for pair in codes.windows(2) {
+        assert_ne!(pair[0].0, pair[1].0, "{pair:?} share a value");
+    }
+    assert!(codes.iter().all(|&(value, _)| value > 0));
+}
