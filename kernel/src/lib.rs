@@ -226,6 +226,7 @@ mod material;
 mod mixing;
 pub mod motion;
 mod normal;
+mod pair_check;
 pub mod rolling;
 mod rotation;
 mod spheres;
@@ -262,6 +263,7 @@ pub use normal::{
     Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
     NormalOscillator,
 };
+pub use pair_check::check_pairs;
 pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use spheres::{SphereArrays, SphereSlice, Spheres};

@@ -165,6 +165,8 @@ pub enum ListArray {
     BackupLoads,
     /// The per-pair loads of [`MaterialTable::evaluate_on`] (none, or one per pair).
     Loads,
+    /// The working memory of [`check_pairs`](crate::check_pairs) (one per pair).
+    Order,
 }
 
 /// Why a list evaluation or its time step was refused. Nothing the caller gave has changed.
@@ -210,6 +212,15 @@ pub enum ListError {
         /// The pair's place in the list.
         pair: usize,
     },
+    /// Pair `pair` names the contact pair `first` names (the same two spheres through the same
+    /// image, either way round): its force would be added twice
+    /// ([`check_pairs`](crate::check_pairs)).
+    RepeatedPair {
+        /// The pair's place in the list.
+        pair: usize,
+        /// The earlier pair it repeats.
+        first: usize,
+    },
     /// The contact of pair `pair` was refused (coincident centres, an overflow, past the
     /// stable step).
     Pair {
@@ -254,6 +265,10 @@ impl core::fmt::Display for ListError {
             ),
             Self::PairIndex { pair } => write!(f, "pair {pair} names a sphere past the arrays"),
             Self::Shift { pair } => write!(f, "pair {pair}'s shift is not finite"),
+            Self::RepeatedPair { pair, first } => write!(
+                f,
+                "pair {pair} repeats pair {first} (the same two spheres through the same image)"
+            ),
             Self::Pair { pair, error } => write!(f, "pair {pair}: {error}"),
             Self::Wall {
                 sphere,

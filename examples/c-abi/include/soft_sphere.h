@@ -272,6 +272,11 @@
 #define SS_ERR_NOT_PREPARED 19
 
 /**
+ * A neighbour list names a pair twice (`ss_check_neighbours`): its force would be added twice.
+ */
+#define SS_ERR_REPEATED_PAIR 21
+
+/**
  * No rolling resistance.
  */
 #define SS_ROLLING_NONE 0
@@ -348,6 +353,53 @@ typedef struct {
    */
   float poisson_ratio;
 } ss_material_f32;
+
+/**
+ * A neighbour list as LAMMPS keeps it: `count` atoms (`atoms[0 .. count)`); atom `i`'s
+ * neighbours are `first_neighbour[i][0 .. neighbour_counts[i])`, each masked with
+ * `index_mask`. `neighbour_counts` and `first_neighbour` are indexed by atom, so they must hold
+ * an entry for every atom the list names.
+ */
+typedef struct {
+  /**
+   * How many atoms the list holds (LAMMPS: `inum`).
+   */
+  size_t count;
+  /**
+   * The atoms (LAMMPS: `ilist`).
+   */
+  const int32_t *atoms;
+  /**
+   * Per atom, how many neighbours (LAMMPS: `numneigh`).
+   */
+  const int32_t *neighbour_counts;
+  /**
+   * Per atom, its first neighbour (LAMMPS: `firstneigh`).
+   */
+  const int32_t *const *first_neighbour;
+  /**
+   * ANDed with each neighbour (LAMMPS: `NEIGHMASK`; -1 keeps every bit).
+   */
+  int32_t index_mask;
+} ss_neighbours;
+
+/**
+ * What an evaluation found, and which atoms an error is about.
+ */
+typedef struct {
+  /**
+   * Touching pairs.
+   */
+  size_t contacts;
+  /**
+   * Pairs at the Coulomb limit.
+   */
+  size_t sliding;
+  /**
+   * The atoms (indices into the arrays) an error is about; -1 when none.
+   */
+  int64_t atoms[2];
+} ss_list_report;
 
 /**
  * Law parameters, validated once by the constructor.
@@ -820,35 +872,6 @@ typedef struct {
 } ss_atoms_f64;
 
 /**
- * A neighbour list as LAMMPS keeps it: `count` atoms (`atoms[0 .. count)`); atom `i`'s
- * neighbours are `first_neighbour[i][0 .. neighbour_counts[i])`, each masked with
- * `index_mask`. `neighbour_counts` and `first_neighbour` are indexed by atom, so they must hold
- * an entry for every atom the list names.
- */
-typedef struct {
-  /**
-   * How many atoms the list holds (LAMMPS: `inum`).
-   */
-  size_t count;
-  /**
-   * The atoms (LAMMPS: `ilist`).
-   */
-  const int32_t *atoms;
-  /**
-   * Per atom, how many neighbours (LAMMPS: `numneigh`).
-   */
-  const int32_t *neighbour_counts;
-  /**
-   * Per atom, its first neighbour (LAMMPS: `firstneigh`).
-   */
-  const int32_t *const *first_neighbour;
-  /**
-   * ANDed with each neighbour (LAMMPS: `NEIGHMASK`; -1 keeps every bit).
-   */
-  int32_t index_mask;
-} ss_neighbours;
-
-/**
  * The per-neighbour history, beside the neighbour list: atom `i`'s `jj`-th neighbour keeps
  * `values` numbers from `first_value[i] + jj * values` and a touch flag at
  * `first_touch[i][jj]` (LAMMPS: `fix neigh/history`'s `firstvalue` and `firstflag`). The flag
@@ -894,24 +917,6 @@ typedef struct {
    */
   double *pair_force;
 } ss_loads_f64;
-
-/**
- * What an evaluation found, and which atoms an error is about.
- */
-typedef struct {
-  /**
-   * Touching pairs.
-   */
-  size_t contacts;
-  /**
-   * Pairs at the Coulomb limit.
-   */
-  size_t sliding;
-  /**
-   * The atoms (indices into the arrays) an error is about; -1 when none.
-   */
-  int64_t atoms[2];
-} ss_list_report;
 
 /**
  * Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
@@ -1589,6 +1594,20 @@ const char *ss_parameter_error_text(int32_t code);
  * What a contact or list error code means, as a sentence.
  */
 const char *ss_contact_error_text(int32_t code);
+
+/**
+ * Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
+ * index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
+ * and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
+ * so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
+ * once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
+ * `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
+ * repeated pair's two).
+ *
+ * # Safety
+ * `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
+ */
+int32_t ss_check_neighbours(size_t atoms, const ss_neighbours *list, ss_list_report *report);
 
 /**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching

@@ -48,9 +48,10 @@ pub use names::{
 };
 
 pub use table::{
-    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_MATERIALS_MAX,
-    SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_coefficients, ss_history, ss_list_report,
-    ss_loads, ss_neighbours, ss_table, ss_table_config, ss_table_report, ss_walls,
+    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_ERR_REPEATED_PAIR,
+    SS_MATERIALS_MAX, SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_check_neighbours,
+    ss_coefficients, ss_history, ss_list_report, ss_loads, ss_neighbours, ss_table,
+    ss_table_config, ss_table_report, ss_walls,
 };
 
 use registry::{AnyBound, AnyLaw, Family, family};

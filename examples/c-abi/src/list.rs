@@ -4,7 +4,7 @@
 
 use soft_sphere::{
     Backup, CheckedSphere, ContactList, Float, Interaction, Law, ListError, ListOutput, ListStats,
-    Mixing, Sphere, SphereArrays, Vec3,
+    Mixing, Sphere, SphereArrays, Vec3, check_pairs,
 };
 
 use crate::{
@@ -42,7 +42,25 @@ pub(crate) unsafe fn check_list<F>(
     if arrays.iter().any(|a| !present(*a, n)) {
         return SS_ERR_NULL;
     }
-    if n > u32::MAX as usize || atoms.owned > n || list.count > n {
+    if atoms.owned > n {
+        return SS_ERR_LENGTH;
+    }
+    // SAFETY: forwarded contract.
+    unsafe { check_pages(n, list, history, report) }
+}
+
+/// Checks the list's pointers and counts and each of its atoms for `n` atoms, in list order,
+/// and the history's pointers when given (the neighbours are checked as they are gathered).
+///
+/// # Safety
+/// As `ss_table_evaluate_*`.
+unsafe fn check_pages<F>(
+    n: usize,
+    list: &ss_neighbours,
+    history: Option<(&ss_history<F>, usize)>,
+    report: &mut ss_list_report,
+) -> i32 {
+    if n > u32::MAX as usize || list.count > n {
         return SS_ERR_LENGTH;
     }
     let lists = [
@@ -551,6 +569,59 @@ where
 }
 
 /// The code of a seam refusal, with the atoms it is about.
+/// The list checked as a host builds it ([`check_pairs`]): its counts and indices, and no pair
+/// named twice (`i`'s page naming `j` twice, or `i`'s naming `j` and `j`'s naming `i`). A
+/// repeated pair is `SS_ERR_REPEATED_PAIR` with its two atoms in the report.
+///
+/// # Safety
+/// As `ss_check_neighbours`.
+pub(crate) unsafe fn check_neighbours(
+    n: usize,
+    list: &ss_neighbours,
+    report: &mut ss_list_report,
+) -> i32 {
+    // SAFETY: forwarded contract.
+    let code = unsafe { check_pages::<f64>(n, list, None, report) };
+    if code != SS_OK {
+        return code;
+    }
+    let mut pairs = Vec::new();
+    for ii in 0..list.count {
+        // SAFETY: checked by `check_pages`: the atom, its count and its page are there.
+        let (i, neighbours) = unsafe {
+            let i = *list.atoms.add(ii) as usize;
+            let count = *list.neighbour_counts.add(i) as usize;
+            let first = *list.first_neighbour.add(i);
+            (
+                i,
+                if count == 0 {
+                    &[][..]
+                } else {
+                    std::slice::from_raw_parts(first, count)
+                },
+            )
+        };
+        for &j in neighbours {
+            let j = j & list.index_mask;
+            if j < 0 || j as usize >= n {
+                report.atoms = [i as i64, i64::from(j)];
+                return SS_ERR_INDEX;
+            }
+            pairs.push([i as u32, j as u32]);
+        }
+    }
+    let mut order = vec![0; pairs.len()];
+    let none: &[Vec3<f64>] = &[];
+    match check_pairs((&pairs, none), n, &mut order) {
+        Ok(()) => SS_OK,
+        Err(ListError::RepeatedPair { pair, .. }) => {
+            report.atoms = pairs[pair].map(i64::from);
+            SS_ERR_REPEATED_PAIR
+        }
+        Err(error) => list_code(error, &pairs, report),
+    }
+}
+
 /// The first of the first `count` atoms whose force or torque, which the contacts are added
 /// to, is not finite: a NaN the host's arrays already hold would pass through every sum.
 ///
@@ -588,6 +659,10 @@ pub(crate) fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_li
         ListError::Material { sphere, .. } => {
             report.atoms = [sphere as i64, -1];
             SS_ERR_MATERIAL
+        }
+        ListError::RepeatedPair { pair, .. } => {
+            report.atoms = atoms(pair);
+            SS_ERR_REPEATED_PAIR
         }
         ListError::Length(_) | ListError::Shift { .. } => SS_ERR_LENGTH,
         ListError::WallMaterial { .. } => SS_ERR_MATERIAL,

@@ -5,7 +5,9 @@
 use core::ffi::{CStr, c_char};
 
 use crate::registry::{NAMES, hertz_model};
-use crate::table::{SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED};
+use crate::table::{
+    SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_ERR_REPEATED_PAIR,
+};
 use crate::*;
 
 /// How many laws the C ABI names (`ss_model_code` counts them; the material tables also take
@@ -128,6 +130,7 @@ pub extern "C" fn ss_contact_error_text(code: i32) -> *const c_char {
         }
         SS_ERR_LENGTH => b"a neighbour count or the history size is wrong\0",
         SS_ERR_INDEX => b"a neighbour index is past the spheres\0",
+        SS_ERR_REPEATED_PAIR => b"the neighbour list names a pair twice\0",
         SS_ERR_MATERIAL => b"a material id is past the table's materials\0",
         SS_ERR_NULL => b"an array is missing\0",
         SS_ERR_NOT_PREPARED => b"the table was not prepared for a time step\0",

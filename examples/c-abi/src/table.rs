@@ -33,6 +33,8 @@ pub const SS_ERR_INDEX: i32 = 17;
 pub const SS_ERR_MATERIAL: i32 = 18;
 /// The table's time step has not been checked (`ss_table_prepare_*`) since it last changed.
 pub const SS_ERR_NOT_PREPARED: i32 = 19;
+/// A neighbour list names a pair twice (`ss_check_neighbours`): its force would be added twice.
+pub const SS_ERR_REPEATED_PAIR: i32 = 21;
 
 /// No rolling resistance.
 pub const SS_ROLLING_NONE: i32 = 0;
@@ -764,6 +766,34 @@ pub(crate) unsafe fn reported(
         *report = found;
     }
     code
+}
+
+/// Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
+/// index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
+/// and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
+/// so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
+/// once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
+/// `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
+/// repeated pair's two).
+///
+/// # Safety
+/// `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ss_check_neighbours(
+    atoms: usize,
+    list: *const ss_neighbours,
+    report: *mut ss_list_report,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(list) = (unsafe { list.as_ref() }) else {
+        return SS_ERR_NULL;
+    };
+    // SAFETY: forwarded contract.
+    unsafe {
+        reported(report, |found| {
+            crate::list::check_neighbours(atoms, list, found)
+        })
+    }
 }
 
 /// # Safety

@@ -1554,3 +1554,56 @@ fn micro_slip_gives_the_kernel_laws_bits() {
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }
+
+/// `ss_check_neighbours` over `host`'s list.
+fn check_neighbours(host: &mut Host) -> (i32, ss_list_report) {
+    let views = host.views();
+    let list = ss_neighbours {
+        count: host.list.len(),
+        atoms: host.list.as_ptr(),
+        neighbour_counts: host.counts.as_ptr(),
+        first_neighbour: views.first_neighbour.as_ptr(),
+        index_mask: 0x1FFF_FFFF,
+    };
+    let mut report = ss_list_report::default();
+    // SAFETY: the host's arrays, as long as they say.
+    let code = unsafe { ss_check_neighbours(host.radius.len(), &list, &mut report) };
+    (code, report)
+}
+
+#[test]
+fn a_list_naming_a_pair_twice_is_refused_when_it_is_built() {
+    let mut host = Host::new(9, 4);
+    assert_eq!(check_neighbours(&mut host).0, SS_OK);
+    // Atom 7's page names its first neighbour twice.
+    let mut twice = Host::new(9, 4);
+    let j = twice.neighbours[7][0];
+    twice.neighbours[7].push(j);
+    twice.counts[7] += 1;
+    let (code, report) = check_neighbours(&mut twice);
+    assert_eq!(
+        (code, report.atoms),
+        (SS_ERR_REPEATED_PAIR, [7, i64::from(j)])
+    );
+    // Atom 3 names j, and j's page names 3 (j owned, so its page is in the list).
+    let mut both = Host::new(9, 4);
+    let j = *both.neighbours[3].iter().find(|&&j| j < 45).unwrap();
+    both.neighbours[j as usize].push(3);
+    both.counts[j as usize] += 1;
+    let (code, report) = check_neighbours(&mut both);
+    assert_eq!(code, SS_ERR_REPEATED_PAIR);
+    let mut named = report.atoms;
+    named.sort();
+    assert_eq!(named, [3, i64::from(j)]);
+    // A neighbour past the atoms, and a missing list.
+    let mut past = Host::new(9, 4);
+    past.neighbours[5][0] = 60;
+    let (code, report) = check_neighbours(&mut past);
+    assert_eq!((code, report.atoms), (SS_ERR_INDEX, [5, 60]));
+    // SAFETY: a null list is refused before anything is read.
+    let code = unsafe { ss_check_neighbours(60, null(), null_mut()) };
+    assert_eq!(code, SS_ERR_NULL);
+    // SAFETY: the texts are static C strings.
+    let text = unsafe { std::ffi::CStr::from_ptr(ss_contact_error_text(SS_ERR_REPEATED_PAIR)) };
+    assert!(text.to_str().unwrap().contains("twice"));
+}
