@@ -3,12 +3,12 @@
 //! restitution, for the linear law (e 0.3 to 1, free and clamped) and for Hertz at its declared
 //! impact speed; faster Hertz impacts and stiffer walls are refused or accurate. Steps below the
 //! stability limit that create energy (up to twice the impact speed) are refused unless asked
-//! for with `coarse_time_step`.
+//! for with `coarse_time_step`, whose contacts past the accuracy limit are counted.
 
 use host_tests::impact::{Integrator, floor, incoming_sphere, wall_impact_with};
 use soft_sphere::{
-    ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, LinearSpringDashpot, NormalModel,
-    ParameterError, TimeStep,
+    CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, LinearSpringDashpot,
+    NormalModel, ParameterError, TimeStep,
 };
 
 const RADIUS: f64 = 2.5e-3;
@@ -158,6 +158,18 @@ fn stable_steps_that_create_energy_are_refused() {
         .into_iter()
         .fold(0.0f64, f64::max);
     assert!(worst > 1.0, "the stable step's worst rebound {worst}");
+    // Its contacts are evaluated knowingly and counted, so a run says how many could have
+    // created energy; at an accurate step none is.
+    let mut pressed = incoming_sphere::<f64>(RADIUS, DENSITY, SPEED, 0.0);
+    pressed.position.z = 0.99 * RADIUS;
+    let pressed = CheckedSphere::new(pressed).unwrap();
+    let accurate = law.time_step(0.9 * law.accurate_time_step(m), m).unwrap();
+    for (step, counted) in [(dt, 1), (accurate, 0)] {
+        let mut bound = law.at(step);
+        let outcome = bound.sphere_wall(&pressed, &floor(), &mut ()).unwrap();
+        assert!(outcome.forces().is_some());
+        assert_eq!(bound.inaccurate_contacts(), counted);
+    }
     match law.time_step(coarse, m) {
         Err(ParameterError::TimeStepInaccurate { time_step, limit }) => {
             assert_eq!(time_step, coarse);

@@ -313,8 +313,8 @@ fn a_tolerating_step_counts_the_same_contacts_in_blocks() {
             }
         }
     }
-    assert_eq!(one.unstable_contacts(), 1);
-    assert_eq!(blocks.unstable_contacts(), 1);
+    assert_eq!(one.inaccurate_contacts(), 1);
+    assert_eq!(blocks.inaccurate_contacts(), 1);
 }
 
 /// A host's pairs for [`BlockGroup`]: each place's spheres and state, and what was scattered

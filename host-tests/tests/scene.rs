@@ -36,7 +36,11 @@ fn gas(count: usize, seed: u64) -> (Vec<Sphere<f64>>, Domain<f64>) {
         // Squeeze the lattice so that neighbours overlap now and then.
         s.position.z *= 0.85;
     }
-    (spheres, column.domain(height))
+    // Room above and below: nothing holds the gas in z, and a sphere that leaves the domain
+    // along it is refused.
+    let mut domain = column.domain(height);
+    (domain.lower.z, domain.upper.z) = (-height, 2.0 * height);
+    (spheres, domain)
 }
 
 fn law() -> Linear {
@@ -1563,8 +1567,8 @@ fn the_grid_is_sized_from_the_spheres_and_spheres_outside_the_box_are_refused() 
         vec![a, b]
     };
     let closed = Domain {
-        lower: Vec3::ZERO,
-        upper: Vec3::new(0.02, 0.005, 0.005),
+        lower: Vec3::new(-0.02, 0.0, 0.0),
+        upper: Vec3::new(0.03, 0.005, 0.005),
         periodic_x: false,
         periodic_y: false,
     };

@@ -62,7 +62,7 @@ fn bounce<L: Law<Float = f64>>(
         }
     }
     assert!(touched, "the sphere never reached the floor");
-    Ok((highest, touching, bound.unstable_contacts()))
+    Ok((highest, touching, bound.inaccurate_contacts()))
 }
 
 #[test]
@@ -126,7 +126,7 @@ fn hertz_impact(speed: f64, fraction: f64, tolerate: bool) -> Result<(f64, usize
                 advance_solid_sphere(&mut j, c.force_on_j(), Vec3::ZERO, dt);
             }
             Interaction::Apart if j.velocity.x > i.velocity.x => {
-                return Ok((j.velocity.x - i.velocity.x, bound.unstable_contacts()));
+                return Ok((j.velocity.x - i.velocity.x, bound.inaccurate_contacts()));
             }
             Interaction::Apart => {
                 advance_solid_sphere(&mut i, Vec3::ZERO, Vec3::ZERO, dt);
@@ -140,9 +140,10 @@ fn hertz_impact(speed: f64, fraction: f64, tolerate: bool) -> Result<(f64, usize
 #[test]
 fn a_hertz_impact_faster_than_declared_is_refused() {
     // Declared for 1 m/s, stepped at 0.9 of the checked limit: the declared impact is evaluated
-    // with no contact refused (coarsely: two steps a contact), and at a tenth of it, rebounds
-    // at e.
-    assert_eq!(hertz_impact(1.0, 0.9, false).map(|(_, n)| n), Ok(0));
+    // with no contact refused (coarsely: two steps a contact, each past the accuracy limit and
+    // counted), and at a tenth of it, within the accuracy limit, rebounds at e.
+    let (_, coarse) = hertz_impact(1.0, 0.9, false).unwrap();
+    assert!((1..=3).contains(&coarse), "{coarse} counted");
     let (rebound, unstable) = hertz_impact(1.0, 0.1, false).unwrap();
     assert!((rebound - 0.7_f64).abs() < 0.02, "rebound {rebound}");
     assert_eq!(unstable, 0);
@@ -178,7 +179,7 @@ fn linear_pair(declared: f64, fraction: f64, tolerate: bool) -> Result<usize, Co
     assert_eq!(effective_mass(i.mass, j.mass), mass / 2.0);
     let mut state = Default::default();
     bound.sphere_sphere(&i, &j, &mut state)?;
-    Ok(bound.unstable_contacts())
+    Ok(bound.inaccurate_contacts())
 }
 
 #[test]
@@ -190,8 +191,10 @@ fn a_step_checked_against_a_heavier_mass_is_refused() {
         Err(ContactError::PastStableStep)
     );
     assert_eq!(linear_pair(mass, 0.99, true), Ok(1));
-    // Against the pair's own effective mass, just inside the limit: evaluated.
-    assert_eq!(linear_pair(mass / 2.0, 0.999, false), Ok(0));
+    // Against the pair's own effective mass, just inside the limit: evaluated, and counted as
+    // past the accuracy limit (the step is coarse); at a tenth of it, within both.
+    assert_eq!(linear_pair(mass / 2.0, 0.999, false), Ok(1));
+    assert_eq!(linear_pair(mass / 2.0, 0.1, false), Ok(0));
     // The per-call path refuses it too, and leaves the state as it was.
     let law = linear_aa(1.0e3);
     let step = law

@@ -380,7 +380,6 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const WIDTH: usize>(
     // finiteness, so touching and non-finite lanes are both asked; each lane's stiffness and
     // effective mass are derived again from the same inputs by the same formulas, so the
     // verdict is the one-contact path's.
-    let tolerate = time_step.tolerates_unstable_contacts();
     let mut unstable = 0usize;
     for (lane, state) in kept.iter_mut().enumerate() {
         let status = out.status[lane];
@@ -394,10 +393,11 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const WIDTH: usize>(
             law.normal()
                 .contact::<M>(frame.overlap, F::ZERO, frame.effective_radius, &unit);
         let stiffness = law.normal().tangent_stiffness(&contact);
-        if within_stable_step(stiffness, effective_mass(i.mass, j.mass), bound.allowed) {
+        let mass = effective_mass(i.mass, j.mass);
+        if within_stable_step(stiffness, mass, bound.allowed) {
             continue;
         }
-        if tolerate {
+        if law.evaluates_past_accuracy(stiffness, mass, time_step) {
             unstable += usize::from(status == Status::TOUCHING);
         } else {
             *state = states[lane];

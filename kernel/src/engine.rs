@@ -96,10 +96,10 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     fn recommended_time_step(&self, effective_mass: Self::Float) -> Self::Float;
 
     /// `(phi / dt)^2`: the squared normal frequency `w0^2` below which a contact is within
-    /// `time_step`'s limit, `phi` being
-    /// [`ContactLaw::stable_phase`](crate::ContactLaw::stable_phase) (for an accurate step,
-    /// [`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase)). A [`BoundLaw`] derives it
-    /// once, so each contact's check is a product and a comparison.
+    /// `time_step`'s accuracy limit, `phi` being
+    /// [`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase). A [`BoundLaw`] derives
+    /// it once, so each contact's check is a product and a comparison; only a contact past it
+    /// is asked more (refused, or for a coarse or tolerating step evaluated and counted).
     fn allowed_rate_squared(&self, time_step: TimeStep<Self::Float>) -> Self::Float;
 
     /// See [`ContactLaw::contact_duration`](crate::ContactLaw::contact_duration).
@@ -228,15 +228,18 @@ impl<L: Law> BoundLaw<L> {
         }
     }
 
-    /// How many contacts past the step's limit (its accuracy limit, or for a coarse step its
-    /// stability limit) this bound law has evaluated: always
-    /// zero unless its step [tolerates](TimeStep::tolerating_unstable_contacts) them (otherwise
-    /// they are refused with [`ContactError::PastStableStep`]).
-    pub fn unstable_contacts(&self) -> usize {
+    /// How many touching contacts past the law's accuracy limit
+    /// ([`ContactLaw::accurate_phase`](crate::ContactLaw::accurate_phase)) this bound law has
+    /// evaluated, knowingly: those of a [coarse](crate::ContactLaw::coarse_time_step) step
+    /// (within its stability limit; past it they are refused) and any that a step made with
+    /// [`TimeStep::tolerating_unstable_contacts`] let through. Always zero for a step from
+    /// [`ContactLaw::time_step`](crate::ContactLaw::time_step): it refuses them with
+    /// [`ContactError::PastStableStep`].
+    pub fn inaccurate_contacts(&self) -> usize {
         self.unstable
     }
 
-    /// Counts `count` more tolerated contacts past the stable step.
+    /// Counts `count` more contacts evaluated past the accuracy limit.
     #[inline(always)]
     pub(crate) fn count_unstable(&mut self, count: impl Into<usize>) {
         self.unstable += count.into();

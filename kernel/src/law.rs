@@ -299,8 +299,8 @@ where
     /// The largest phase `w0 dt` (rad) a step may advance a contact's normal oscillator by, `w0`
     /// the contact's undamped normal frequency (for [`Hertz`](crate::Hertz), at its current
     /// overlap), and keep the normal and the tangential modes stable. Every evaluation with a
-    /// [coarse](ContactLaw::coarse_time_step) step checks its contact against it
-    /// ([`ContactError::PastStableStep`]); an accurate step checks against the smaller
+    /// [coarse](ContactLaw::coarse_time_step) step refuses a contact past it
+    /// ([`ContactError::PastStableStep`]); every step first checks against the smaller
     /// [`ContactLaw::accurate_phase`]. It is
     /// [`ContactLaw::critical_time_step`] times `w0`, the same for every mass (rolling aside:
     /// its limit is checked by [`ContactLaw::time_step`]).
@@ -428,9 +428,11 @@ where
     }
 
     /// A step past the accuracy limit, asked for knowingly: checked for stability only (below
-    /// [`ContactLaw::critical_time_step`]), and every contact evaluated with it checked against
-    /// [`ContactLaw::stable_phase`] only. Its contacts can rebound faster than they came (up to
-    /// twice near the stability limit); [`TimeStep::is_accurate`] tells such a step apart.
+    /// [`ContactLaw::critical_time_step`]). A contact evaluated with it past
+    /// [`ContactLaw::stable_phase`] is refused; one past [`ContactLaw::accurate_phase`] only is
+    /// evaluated and counted ([`BoundLaw::inaccurate_contacts`](crate::BoundLaw::inaccurate_contacts)):
+    /// such contacts can rebound faster than they came (up to twice near the stability limit).
+    /// [`TimeStep::is_accurate`] tells such a step apart.
     ///
     /// # Errors
     /// As [`ContactLaw::time_step`], without [`ParameterError::TimeStepInaccurate`].
@@ -540,32 +542,45 @@ where
                 let (oscillator, effective_mass) = oscillator();
                 let (forces, next_state, stiffness) =
                     self.touching(&frame, &oscillator, state, time_step);
-                let unstable = !within_stable_step(stiffness, effective_mass, allowed);
-                if unstable && !time_step.tolerates_unstable_contacts() {
+                let counted = !within_stable_step(stiffness, effective_mass, allowed);
+                if counted && !self.evaluates_past_accuracy(stiffness, effective_mass, time_step) {
                     return Err(ContactError::PastStableStep);
                 }
                 if FINITE && !(forces.is_finite() && next_state.is_finite()) {
                     return Err(ContactError::NonFiniteResult);
                 }
                 *state = next_state;
-                Ok((Interaction::Touching(forces), unstable))
+                Ok((Interaction::Touching(forces), counted))
             }
         }
     }
 
-    /// `(phi / dt)^2`, the squared frequency the step allows, `phi` the
-    /// [`stable_phase`](Self::stable_phase) or, for an [accurate](TimeStep::is_accurate) step,
+    /// `(phi / dt)^2`, the squared frequency within which a contact is evaluated as usual, `phi`
     /// the [`accurate_phase`](Self::accurate_phase): one division per step, which a bound law
     /// makes once ([`BoundLaw`]) rather than at every contact.
     #[inline(always)]
     pub(crate) fn allowed_rate_squared(&self, time_step: TimeStep<F>) -> F {
-        let phase = if time_step.is_accurate() {
-            self.accurate_phase()
-        } else {
-            self.stable_phase
-        };
-        let rate = phase / time_step.seconds();
+        let rate = self.accurate_phase() / time_step.seconds();
         rate * rate
+    }
+
+    /// Whether a contact past the step's accuracy limit (of tangent stiffness `stiffness`, at
+    /// effective mass `effective_mass`) is evaluated, and counted, rather than refused: when the
+    /// step [tolerates](TimeStep::tolerating_unstable_contacts) such contacts, or is
+    /// [coarse](Self::coarse_time_step) and the contact within the stability limit. Asked only
+    /// of contacts past the accuracy limit, so its division is paid by them alone.
+    #[inline]
+    pub(crate) fn evaluates_past_accuracy(
+        &self,
+        stiffness: F,
+        effective_mass: F,
+        time_step: TimeStep<F>,
+    ) -> bool {
+        let stable = || {
+            let rate = self.stable_phase / time_step.seconds();
+            within_stable_step(stiffness, effective_mass, rate * rate)
+        };
+        time_step.tolerates_unstable_contacts() || (!time_step.is_accurate() && stable())
     }
 
     /// The forces of a touching contact, the state to keep and the contact's tangent stiffness

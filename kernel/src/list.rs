@@ -127,9 +127,11 @@ pub struct ListStats<F> {
     pub wall_contacts: usize,
     /// Contacts (pairs and walls) at the Coulomb limit.
     pub sliding_contacts: usize,
-    /// Contacts past the step's stability limit that the step tolerated (zero otherwise: they
-    /// are refused).
-    pub unstable_contacts: usize,
+    /// Touching contacts past their law's accuracy limit that the step evaluated knowingly (a
+    /// [coarse](MaterialTable::coarse_time_step) step's, or a tolerating step's:
+    /// [`BoundLaw::inaccurate_contacts`]); zero for a step from [`MaterialTable::time_step`],
+    /// which refuses them.
+    pub inaccurate_contacts: usize,
     /// Sum of the sphere-sphere overlaps (m).
     pub overlap_sum: F,
 }
@@ -667,11 +669,11 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
                 return Err(error);
             }
         };
-        sink.stats.unstable_contacts = spread_unstable
+        sink.stats.inaccurate_contacts = spread_unstable
             + bound
                 .iter()
                 .flatten()
-                .map(BoundLaw::unstable_contacts)
+                .map(BoundLaw::inaccurate_contacts)
                 .sum::<usize>();
         Ok(sink.stats)
     }

@@ -132,7 +132,7 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
             bound
                 .iter()
                 .flatten()
-                .map(BoundLaw::unstable_contacts)
+                .map(BoundLaw::inaccurate_contacts)
                 .sum()
         });
     });

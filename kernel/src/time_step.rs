@@ -8,10 +8,13 @@ use crate::float::Float;
 /// limit). Made by [`ContactLaw::time_step`](crate::ContactLaw::time_step) (or, from the spheres
 /// actually present, by a [`MaterialTable`](crate::MaterialTable)).
 ///
-/// Every contact evaluated with it is checked against the same limit: a contact stiffer than
-/// the step allows (a lighter pair than the one declared, a [`Hertz`](crate::Hertz) overlap past
-/// the declared impact's) is refused with [`ContactError::PastStableStep`](crate::ContactError::PastStableStep),
-/// unless the step [tolerates](TimeStep::tolerating_unstable_contacts) such contacts.
+/// Every contact evaluated with it is checked against the law's accuracy limit: a contact
+/// stiffer than the step allows (a lighter pair than the one declared, a
+/// [`Hertz`](crate::Hertz) overlap past the declared impact's) is refused with
+/// [`ContactError::PastStableStep`](crate::ContactError::PastStableStep), unless the step
+/// [tolerates](TimeStep::tolerating_unstable_contacts) such contacts or is coarse and the contact
+/// within the stability limit: then it is evaluated and counted
+/// ([`BoundLaw::inaccurate_contacts`](crate::BoundLaw::inaccurate_contacts)).
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
 pub struct TimeStep<F> {
     seconds: F,
@@ -38,8 +41,8 @@ impl<F: Float> TimeStep<F> {
     }
 
     /// Whether the step was checked for accuracy ([`ContactLaw::time_step`](crate::ContactLaw::time_step)),
-    /// so that each contact is checked against the law's
-    /// [`accurate_phase`](crate::ContactLaw::accurate_phase) rather than its
+    /// so that a contact past the law's [`accurate_phase`](crate::ContactLaw::accurate_phase)
+    /// is refused; a coarse step evaluates and counts it while it is within the
     /// [`stable_phase`](crate::ContactLaw::stable_phase).
     #[inline(always)]
     pub fn is_accurate(self) -> bool {
@@ -52,10 +55,10 @@ impl<F: Float> TimeStep<F> {
         self.seconds
     }
 
-    /// The same step, with contacts past its stability limit evaluated instead of refused: a
-    /// [`BoundLaw`](crate::BoundLaw) counts them ([`BoundLaw::unstable_contacts`](crate::BoundLaw::unstable_contacts)).
-    /// For studies of instability, and for engines that report them in their statistics rather
-    /// than stop.
+    /// The same step, with contacts past its limits (accuracy, and stability) evaluated instead
+    /// of refused: a [`BoundLaw`](crate::BoundLaw) counts them
+    /// ([`BoundLaw::inaccurate_contacts`](crate::BoundLaw::inaccurate_contacts)). For studies of
+    /// instability, and for engines that report them in their statistics rather than stop.
     pub fn tolerating_unstable_contacts(self) -> Self {
         Self {
             tolerate: true,

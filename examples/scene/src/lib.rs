@@ -102,9 +102,10 @@ pub struct StepStats<F> {
     pub sliding_contacts: usize,
     /// Sphere-wall contacts touching.
     pub wall_contacts: usize,
-    /// Contacts past the step's stability limit that a step made with
+    /// Touching contacts past their law's accuracy limit that the step evaluated knowingly: a
+    /// coarse step's ([`Scene::coarse_time_step`]), or those a step made with
     /// [`TimeStep::tolerating_unstable_contacts`] let through (otherwise they stop the step).
-    pub unstable_contacts: usize,
+    pub inaccurate_contacts: usize,
     /// Sum of the sphere-sphere overlaps (m).
     pub overlap_sum: F,
     /// The energy account at the end of the step, when the scene keeps records

@@ -309,7 +309,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             pair_contacts: list_stats.pair_contacts,
             sliding_contacts: list_stats.sliding_contacts,
             wall_contacts: list_stats.wall_contacts,
-            unstable_contacts: list_stats.unstable_contacts,
+            inaccurate_contacts: list_stats.inaccurate_contacts,
             overlap_sum: list_stats.overlap_sum,
             energy: None,
         };
