@@ -331,6 +331,16 @@ fn check_walls<F, const MATERIALS: usize>(walls: &[MaterialWall<F>]) -> Result<(
     }
 }
 
+/// True when every component of `vectors` is finite: one probe per component (`x * 0` is `0`
+/// for finite `x`, NaN otherwise), summed with no branch per vector.
+fn all_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
+    let mut probe = Vec3::ZERO;
+    for v in vectors {
+        probe += *v * F::ZERO;
+    }
+    probe.x + probe.y + probe.z == F::ZERO
+}
+
 impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// Checks `seconds` for these spheres and walls, for accuracy
     /// ([`ContactLaw::time_step`](crate::ContactLaw::time_step)): against the law of every pair of materials
@@ -593,8 +603,10 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             return Err(ListError::Length(array));
         }
         check_materials::<_, MATERIALS>(spheres)?;
-        let finite = |k: &usize| out.force[*k].is_finite() && out.torque[*k].is_finite();
-        if let Some(sphere) = (0..n).find(|k| !finite(k)) {
+        // One probe over both arrays; the first bad sphere is looked for only when it fails.
+        if !(all_finite(out.force) && all_finite(out.torque)) {
+            let finite = |k: &usize| out.force[*k].is_finite() && out.torque[*k].is_finite();
+            let sphere = (0..n).find(|k| !finite(k)).unwrap_or(0);
             return Err(ListError::Load { sphere });
         }
         check_walls::<_, MATERIALS>(walls)?;
