@@ -18,6 +18,7 @@ use crate::executor::{Executor, Serial};
 use crate::float::Float;
 use crate::geometry::{Separation, reaches_wall};
 use crate::law::{ContactForces, Interaction};
+use crate::pair_check::check_places;
 use crate::spheres::Spheres;
 use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
@@ -610,15 +611,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             return Err(ListError::Load { sphere });
         }
         check_walls::<_, MATERIALS>(walls)?;
-        if let Some(pair) = pairs
-            .iter()
-            .position(|&[i, j]| i as usize >= n || j as usize >= n)
-        {
-            return Err(ListError::PairIndex { pair });
-        }
-        if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
-            return Err(ListError::Shift { pair });
-        }
+        check_places((pairs, shifts), n)?;
         let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
         saved_walls.copy_from_slice(list.wall_states);
         let (saved_force, saved_torque) = out.backup.loads.split_at_mut(n);

@@ -51,15 +51,7 @@ pub fn check_pairs<F: Float>(
     if order.len() != pairs.len() || pairs.len() > u32::MAX as usize {
         return Err(ListError::Length(ListArray::Order));
     }
-    if let Some(pair) = pairs
-        .iter()
-        .position(|&[i, j]| i as usize >= spheres || j as usize >= spheres)
-    {
-        return Err(ListError::PairIndex { pair });
-    }
-    if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
-        return Err(ListError::Shift { pair });
-    }
+    check_places((pairs, shifts), spheres)?;
     let contact = |k: u32| {
         let shift = shifts.get(k as usize).copied().unwrap_or(Vec3::ZERO);
         contact_of(pairs[k as usize], shift)
@@ -82,6 +74,25 @@ pub fn check_pairs<F: Float>(
             pair: pair as usize,
             first: first as usize,
         }),
+        None => Ok(()),
+    }
+}
+
+/// The first pair naming a sphere past `spheres` ([`ListError::PairIndex`]), then the first
+/// shift that is not finite ([`ListError::Shift`]): what keeps an evaluation in bounds, checked
+/// by the list seam at every call and by [`check_pairs`] when a list is built.
+pub(crate) fn check_places<F: Float>(
+    (pairs, shifts): (&[[u32; 2]], &[Vec3<F>]),
+    spheres: usize,
+) -> Result<(), ListError> {
+    if let Some(pair) = pairs
+        .iter()
+        .position(|&[i, j]| i as usize >= spheres || j as usize >= spheres)
+    {
+        return Err(ListError::PairIndex { pair });
+    }
+    match shifts.iter().position(|shift| !shift.is_finite()) {
+        Some(pair) => Err(ListError::Shift { pair }),
         None => Ok(()),
     }
 }
