@@ -81,6 +81,7 @@ pub fn check_pairs<F: Float>(
 /// The first pair naming a sphere past `spheres` ([`ListError::PairIndex`]), then the first
 /// shift that is not finite ([`ListError::Shift`]): what keeps an evaluation in bounds, checked
 /// by the list seam at every call and by [`check_pairs`] when a list is built.
+#[inline(always)]
 pub(crate) fn check_places<F: Float>(
     (pairs, shifts): (&[[u32; 2]], &[Vec3<F>]),
     spheres: usize,
@@ -91,10 +92,10 @@ pub(crate) fn check_places<F: Float>(
     {
         return Err(ListError::PairIndex { pair });
     }
-    match shifts.iter().position(|shift| !shift.is_finite()) {
-        Some(pair) => Err(ListError::Shift { pair }),
-        None => Ok(()),
+    if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
+        return Err(ListError::Shift { pair });
     }
+    Ok(())
 }
 
 /// The contact a pair names, written one way: the lower index first, with the shift that
