@@ -1605,6 +1605,9 @@ fn the_grid_is_sized_from_the_spheres_and_spheres_outside_the_box_are_refused() 
     let mut outside = pair(0.5e-3);
     outside[1].position.z = -1e-3;
     assert_eq!(built(outside), Some(SceneError::Outside { index: 1 }));
+    let mut past_x = pair(0.5e-3);
+    past_x[1].position.x = 0.031;
+    assert_eq!(built(past_x), Some(SceneError::Outside { index: 1 }));
     let mut beyond = pair(0.5e-3);
     beyond[0].position.y = 0.006;
     assert_eq!(
