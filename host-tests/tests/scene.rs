@@ -1605,6 +1605,17 @@ fn the_grid_is_sized_from_the_spheres_and_spheres_outside_the_box_are_refused() 
     let mut outside = pair(0.5e-3);
     outside[1].position.z = -1e-3;
     assert_eq!(built(outside), Some(SceneError::Outside { index: 1 }));
+    // With no sphere the cells are a quarter of the domain's shortest side: an empty scene
+    // builds and steps in any valid domain, with any skin.
+    let about_origin = Domain {
+        lower: Vec3::new(-0.01, -0.01, -0.01),
+        upper: Vec3::new(0.01, 0.01, 0.01),
+        periodic_x: true,
+        periodic_y: true,
+    };
+    let mut empty = OwnedScene::<Linear, NoWalls>::new(vec![], about_origin, 0.0, NoWalls).unwrap();
+    let input = input(&law, (Vec3::ZERO, 1e-6, 1e-6), Integrator::SymplecticEuler);
+    assert_eq!(empty.run(&input, 2, |_, _| {}), Ok(()));
     let mut past_x = pair(0.5e-3);
     past_x[1].position.x = 0.031;
     assert_eq!(built(past_x), Some(SceneError::Outside { index: 1 }));
