@@ -614,10 +614,6 @@ pub(crate) unsafe fn check_neighbours(
     let none: &[Vec3<f64>] = &[];
     match check_pairs((&pairs, none), n, &mut order) {
         Ok(()) => SS_OK,
-        Err(ListError::RepeatedPair { pair, .. }) => {
-            report.atoms = pairs[pair].map(i64::from);
-            SS_ERR_REPEATED_PAIR
-        }
         Err(error) => list_code(error, &pairs, report),
     }
 }
