@@ -367,7 +367,7 @@ pub(crate) fn sphere_pairs<F, Nm, T, M, R, Ro, const WIDTH: usize>(
         let separation = Separation::of(&i, &j);
         let frame = separation.frame::<M>(&i, &j, law.lever_arm());
         let oscillator = derive([i.mass, j.mass]);
-        let (forces, next, _) = law.touching(&frame, &oscillator, state, time_step);
+        let (forces, next, _) = law.touching(&frame, &oscillator, (state, None), time_step);
         let finite = forces.is_finite() && next.is_finite();
         let status = Status::of_pair(&i, &j, &separation, finite);
         let touching = status == Status::TOUCHING;

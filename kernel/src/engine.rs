@@ -20,6 +20,8 @@ pub(crate) mod sealed {
     /// at once and re-runs a failing chunk checked).
     #[derive(Clone, Copy, Debug)]
     pub struct Deferred(pub(crate) ());
+
+    pub use crate::sifted::{Sifted, Sifts};
 }
 
 /// A [`ContactLaw`](crate::ContactLaw), whatever its slots: lets an engine take the law as one
@@ -132,17 +134,32 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         state: &mut Self::State,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
-    /// [`Law::evaluate_pair`] without the finiteness test of the forces and the new state,
-    /// which the caller makes (the list seam, once per chunk); the state is written even when it
-    /// is not finite. Only the kernel can call it.
+    /// The roots of a sifted chunk's first `found` pairs ([`sealed::Sifts`]), by the law's
+    /// backend, taken before any of them is evaluated, in loops the processor overlaps (and the
+    /// compiler widens): each pair's `1 / d` and overlap, and its stored state's (in
+    /// `states`, at the pair's place in the chunk) [stored vector](crate::TangentialModel::stored_vector)
+    /// turned into its tangent plane. Only the kernel can call it.
+    #[doc(hidden)]
+    fn sifted_roots(
+        sifts: &mut sealed::Sifts<Self::Float>,
+        found: usize,
+        states: &[Self::State],
+        deferred: sealed::Deferred,
+    );
+
+    /// [`Law::evaluate_pair`] on a pair the list seam sifted, its separation and roots given
+    /// (the same bits), without the finiteness test of the forces and the new state, which the
+    /// caller makes (the list seam, once per chunk); the state is written even when it is not
+    /// finite. Only the kernel can call it.
     ///
     /// # Errors
     /// As [`BoundLaw::sphere_sphere`], except [`ContactError::NonFiniteResult`].
     #[doc(hidden)]
-    fn evaluate_pair_deferred(
+    fn evaluate_sifted_deferred(
         bound: &mut BoundLaw<Self>,
         i: &CheckedSphere<Self::Float>,
         j: &CheckedSphere<Self::Float>,
+        sifted: &sealed::Sifted<Self::Float>,
         state: &mut Self::State,
         deferred: sealed::Deferred,
     ) -> Result<Interaction<Self::Float>, ContactError>;
@@ -274,16 +291,17 @@ impl<L: Law> BoundLaw<L> {
         L::evaluate_pair(self, i, j, state)
     }
 
-    /// [`BoundLaw::sphere_sphere`] whose caller tests the forces and the new state for
-    /// finiteness itself (see [`Law::evaluate_pair_deferred`]).
+    /// [`BoundLaw::sphere_sphere`] on a pair the list seam sifted, whose caller tests the forces
+    /// and the new state for finiteness itself (see [`Law::evaluate_sifted_deferred`]).
     #[inline(always)]
-    pub(crate) fn sphere_sphere_deferred(
+    pub(crate) fn sphere_sphere_sifted(
         &mut self,
         i: &CheckedSphere<L::Float>,
         j: &CheckedSphere<L::Float>,
+        sifted: &sealed::Sifted<L::Float>,
         state: &mut L::State,
     ) -> Result<Interaction<L::Float>, ContactError> {
-        L::evaluate_pair_deferred(self, i, j, state, sealed::Deferred(()))
+        L::evaluate_sifted_deferred(self, i, j, sifted, state, sealed::Deferred(()))
     }
 
     /// Evaluates the contact between a checked sphere (body i) and a wall (body j) for one step;

@@ -42,9 +42,9 @@ pub(crate) struct ContactFrame<F> {
 /// ([`crate::batch`]) classify a pair by it, so they agree on where contact begins.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Separation<F> {
-    offset: Vec3<F>,
-    distance_squared: F,
-    reach: F,
+    pub offset: Vec3<F>,
+    pub distance_squared: F,
+    pub reach: F,
 }
 
 impl<F: Float> Separation<F> {
@@ -84,6 +84,22 @@ impl<F: Float> Separation<F> {
         self.distance_squared >= self.reach * self.reach
     }
 
+    /// The separation's two roots, the long-latency part of its frame: `1 / d` and the overlap
+    /// `S - d`. Branch-free and of plain numbers, so the list seam takes them for a whole chunk
+    /// of sifted pairs in one loop the compiler widens.
+    #[inline(always)]
+    pub(crate) fn roots<M: MathBackend<F>>(distance_squared: F, reach: F) -> Roots<F> {
+        let inverse_distance = M::inv_sqrt(distance_squared);
+        let distance = distance_squared * inverse_distance;
+        // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an
+        // approximate square root, where S - d would cancel.
+        let overlap = (reach * reach - distance_squared) / (reach + distance);
+        Roots {
+            inverse_distance,
+            overlap,
+        }
+    }
+
     /// The contact frame of an overlapping, non-coincident pair. Branch-free, so a batch can
     /// compute it for every lane and keep it only where the pair touches.
     #[inline(always)]
@@ -93,17 +109,29 @@ impl<F: Float> Separation<F> {
         j: &Sphere<F>,
         lever_arm: LeverArm,
     ) -> ContactFrame<F> {
-        let (distance_squared, reach) = (self.distance_squared, self.reach);
-        let inverse_distance = M::inv_sqrt(distance_squared);
-        let distance = distance_squared * inverse_distance;
-        // (S^2 - d^2) / (S + d) keeps its relative accuracy when delta << S even with an
-        // approximate square root, where S - d would cancel.
-        let overlap = (reach * reach - distance_squared) / (reach + distance);
+        let roots = Self::roots::<M>(self.distance_squared, self.reach);
+        self.frame_with(roots, i, j, lever_arm)
+    }
+
+    /// The contact frame from the separation's [`roots`](Self::roots).
+    #[inline(always)]
+    pub(crate) fn frame_with(
+        &self,
+        roots: Roots<F>,
+        i: &Sphere<F>,
+        j: &Sphere<F>,
+        lever_arm: LeverArm,
+    ) -> ContactFrame<F> {
+        let Roots {
+            inverse_distance,
+            overlap,
+        } = roots;
         let (arm_i, arm_j) = match lever_arm {
             LeverArm::Radius => (i.radius, j.radius),
             LeverArm::ContactPlane => {
                 let (ri, rj) = (i.radius * i.radius, j.radius * j.radius);
                 let half_inverse = F::HALF * inverse_distance;
+                let distance_squared = self.distance_squared;
                 (
                     ((distance_squared + ri - rj) * half_inverse).max_of(F::ZERO),
                     ((distance_squared + rj - ri) * half_inverse).max_of(F::ZERO),
@@ -113,7 +141,7 @@ impl<F: Float> Separation<F> {
         ContactFrame {
             normal: self.offset * inverse_distance,
             overlap,
-            effective_radius: i.radius * j.radius / reach,
+            effective_radius: i.radius * j.radius / self.reach,
             arm_i,
             arm_j,
             velocity: j.velocity - i.velocity,
@@ -121,6 +149,32 @@ impl<F: Float> Separation<F> {
             angular_velocity_j: j.angular_velocity,
         }
     }
+}
+
+/// A separation's roots ([`Separation::roots`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Roots<F> {
+    pub inverse_distance: F,
+    pub overlap: F,
+}
+
+/// The contact between checked spheres i and j of `separation` (see [`crate::checked::check`]),
+/// `None` when they do not overlap; `roots` gives its [`Separation::roots`], asked only of an
+/// overlapping pair.
+#[inline(always)]
+pub(crate) fn separated_frame<F: Float>(
+    (i, j): (&Sphere<F>, &Sphere<F>),
+    separation: &Separation<F>,
+    roots: impl FnOnce() -> Roots<F>,
+    lever_arm: LeverArm,
+) -> Result<Option<ContactFrame<F>>, ContactError> {
+    if separation.coincident() {
+        return Err(ContactError::CoincidentCentres);
+    }
+    if separation.apart() {
+        return Ok(None);
+    }
+    Ok(Some(separation.frame_with(roots(), i, j, lever_arm)))
 }
 
 /// The contact between checked spheres i and j (see [`crate::checked::check`]), `None` when they
@@ -132,13 +186,8 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
     lever_arm: LeverArm,
 ) -> Result<Option<ContactFrame<F>>, ContactError> {
     let separation = Separation::of(i, j);
-    if separation.coincident() {
-        return Err(ContactError::CoincidentCentres);
-    }
-    if separation.apart() {
-        return Ok(None);
-    }
-    Ok(Some(separation.frame::<M>(i, j, lever_arm)))
+    let roots = || Separation::roots::<M>(separation.distance_squared, separation.reach);
+    separated_frame((i, j), &separation, roots, lever_arm)
 }
 
 /// The contact between a checked sphere (body i) and a wall (body j), `None` when they do not

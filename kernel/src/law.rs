@@ -9,11 +9,13 @@ use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::float::{Float, all_finite};
-use crate::geometry::{self, ContactFrame, LeverArm};
+use crate::geometry::{self, ContactFrame, LeverArm, Separation};
 use crate::normal::{Accuracy, NormalModel, NormalOscillator, scan_accuracy};
 use crate::rolling::{NoRolling, RollingInput, RollingModel};
 use crate::rotation::{NonRotating, Rotating, Rotation};
-use crate::tangential::{ContactState, TangentialInput, TangentialModel};
+use crate::tangential::{
+    ContactState, TangentialInput, TangentialModel, rotate_into_tangent_plane,
+};
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
 
@@ -486,7 +488,7 @@ where
         };
         let allowed = self.allowed_rate_squared(time_step);
         Ok(self
-            .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
+            .interaction::<true>(frame, oscillator, state, (time_step, allowed), None)?
             .0)
     }
 
@@ -509,7 +511,7 @@ where
         let oscillator = || (self.normal.oscillator::<M>(sphere.mass), sphere.mass);
         let allowed = self.allowed_rate_squared(time_step);
         Ok(self
-            .interaction::<true>(frame, oscillator, state, (time_step, allowed))?
+            .interaction::<true>(frame, oscillator, state, (time_step, allowed), None)?
             .0)
     }
 
@@ -524,7 +526,7 @@ where
     /// stable step that the step tolerates. `allowed` is the step's
     /// [`allowed_rate_squared`](Self::allowed_rate_squared), derived once per step by a bound law.
     /// With `FINITE` false the forces and the new state are not tested for finiteness: the
-    /// caller tests them ([`Law::evaluate_pair_deferred`]).
+    /// caller tests them ([`Law::evaluate_sifted_deferred`]).
     #[inline(always)]
     fn interaction<const FINITE: bool>(
         &self,
@@ -532,6 +534,7 @@ where
         oscillator: impl FnOnce() -> (NormalOscillator<F>, F),
         state: &mut Ro::State<T::State>,
         (time_step, allowed): (TimeStep<F>, F),
+        turned: Option<Vec3<F>>,
     ) -> Result<(Interaction<F>, bool), ContactError> {
         match frame {
             None => {
@@ -541,7 +544,7 @@ where
             Some(frame) => {
                 let (oscillator, effective_mass) = oscillator();
                 let (forces, next_state, stiffness) =
-                    self.touching(&frame, &oscillator, state, time_step);
+                    self.touching(&frame, &oscillator, (state, turned), time_step);
                 let counted = !within_stable_step(stiffness, effective_mass, allowed);
                 if counted && !self.evaluates_past_accuracy(stiffness, effective_mass, time_step) {
                     return Err(ContactError::PastStableStep);
@@ -592,7 +595,7 @@ where
         &self,
         frame: &ContactFrame<F>,
         oscillator: &NormalOscillator<F>,
-        state: &Ro::State<T::State>,
+        (state, turned): (&Ro::State<T::State>, Option<Vec3<F>>),
         time_step: TimeStep<F>,
     ) -> (ContactForces<F>, Ro::State<T::State>, F) {
         let n = frame.normal;
@@ -633,7 +636,11 @@ where
                 contact_radius: normal.contact_radius,
                 time_step: time_step.seconds(),
             };
-            let output = self.tangential.force::<M>(Ro::tangential(state), &input);
+            let stored = Ro::tangential(state);
+            let output = match turned {
+                Some(turned) => self.tangential.force_turned::<M>(stored, &input, turned),
+                None => self.tangential.force::<M>(stored, &input),
+            };
             forces.tangential_force = output.force;
             forces.slip_velocity = slip_velocity;
             forces.sliding = output.sliding;
@@ -748,18 +755,57 @@ where
         j: &CheckedSphere<F>,
         state: &mut Ro::State<T::State>,
     ) -> Result<Interaction<F>, ContactError> {
-        bound_pair::<_, _, _, _, _, _, true>(bound, i, j, state)
+        bound_pair(bound, i, j, state)
     }
 
     #[inline(always)]
-    fn evaluate_pair_deferred(
+    fn sifted_roots(
+        sifts: &mut sealed::Sifts<F>,
+        found: usize,
+        states: &[Self::State],
+        _: sealed::Deferred,
+    ) {
+        let reach = &sifts.reach[..found];
+        let separations = sifts.distance_squared[..found].iter().zip(reach);
+        let roots = sifts
+            .inverse_distance
+            .iter_mut()
+            .zip(sifts.overlap.iter_mut());
+        for ((&distance_squared, &reach), (inverse_distance, overlap)) in separations.zip(roots) {
+            let roots = Separation::roots::<M>(distance_squared, reach);
+            (*inverse_distance, *overlap) = (roots.inverse_distance, roots.overlap);
+        }
+        if !T::TURNS {
+            return;
+        }
+        // The normal as the frame makes it (`offset / d`), and each pair's stored vector.
+        let places = &sifts.places[..found];
+        let normals = sifts.offset.iter().zip(sifts.inverse_distance.iter());
+        for ((&place, (&offset, &inverse_distance)), turned) in
+            places.iter().zip(normals).zip(sifts.turned.iter_mut())
+        {
+            let stored = T::stored_vector(Ro::tangential(&states[usize::from(place)]));
+            *turned = rotate_into_tangent_plane::<F, M>(stored, offset * inverse_distance);
+        }
+    }
+
+    #[inline(always)]
+    fn evaluate_sifted_deferred(
         bound: &mut BoundLaw<Self>,
         i: &CheckedSphere<F>,
         j: &CheckedSphere<F>,
+        sifted: &sealed::Sifted<F>,
         state: &mut Ro::State<T::State>,
         _: sealed::Deferred,
     ) -> Result<Interaction<F>, ContactError> {
-        bound_pair::<_, _, _, _, _, _, false>(bound, i, j, state)
+        let frame = geometry::separated_frame(
+            (i, j),
+            &sifted.separation,
+            || sifted.roots,
+            bound.law.lever_arm,
+        )?;
+        let turned = Some(sifted.turned);
+        bound_frame::<_, _, _, _, _, _, false>(bound, (i, j), frame, (state, turned))
     }
 
     #[inline(always)]
@@ -793,19 +839,41 @@ where
             (oscillator, sphere.mass)
         };
         let (interaction, unstable) =
-            law.interaction::<true>(frame, oscillator, state, (*time_step, *allowed))?;
+            law.interaction::<true>(frame, oscillator, state, (*time_step, *allowed), None)?;
         *count += usize::from(unstable);
         Ok(interaction)
     }
 }
 
-/// A bound law's sphere-sphere evaluation, its results tested for finiteness when `FINITE`.
+/// A bound law's sphere-sphere evaluation, its results tested for finiteness.
 #[inline(always)]
-fn bound_pair<F, N, T, M, R, Ro, const FINITE: bool>(
+fn bound_pair<F, N, T, M, R, Ro>(
     bound: &mut BoundLaw<ContactLaw<F, N, T, M, R, Ro>>,
     i: &CheckedSphere<F>,
     j: &CheckedSphere<F>,
     state: &mut Ro::State<T::State>,
+) -> Result<Interaction<F>, ContactError>
+where
+    F: Float,
+    N: NormalModel<F>,
+    T: TangentialModel<F>,
+    M: MathBackend<F>,
+    R: Rotation,
+    Ro: RollingModel<F>,
+{
+    let frame = geometry::sphere_sphere::<F, M>(i, j, bound.law.lever_arm)?;
+    bound_frame::<_, _, _, _, _, _, true>(bound, (i, j), frame, (state, None))
+}
+
+/// A bound law's sphere-sphere evaluation from the pair's frame (none when apart), its results
+/// tested for finiteness when `FINITE`; `turned` is the tangential slot's stored vector turned
+/// into the tangent plane when the caller turned it ([`TangentialModel::force_turned`]).
+#[inline(always)]
+fn bound_frame<F, N, T, M, R, Ro, const FINITE: bool>(
+    bound: &mut BoundLaw<ContactLaw<F, N, T, M, R, Ro>>,
+    (i, j): (&CheckedSphere<F>, &CheckedSphere<F>),
+    frame: Option<ContactFrame<F>>,
+    (state, turned): (&mut Ro::State<T::State>, Option<Vec3<F>>),
 ) -> Result<Interaction<F>, ContactError>
 where
     F: Float,
@@ -823,7 +891,6 @@ where
         unstable: count,
         ..
     } = bound;
-    let frame = geometry::sphere_sphere::<F, M>(i, j, law.lever_arm)?;
     let oscillator = || {
         *pair.get([i.mass, j.mass], |masses| {
             let mass = effective_mass(masses[0], masses[1]);
@@ -831,7 +898,7 @@ where
         })
     };
     let (interaction, unstable) =
-        law.interaction::<FINITE>(frame, oscillator, state, (*time_step, *allowed))?;
+        law.interaction::<FINITE>(frame, oscillator, state, (*time_step, *allowed), turned)?;
     *count += usize::from(unstable);
     Ok(interaction)
 }

@@ -229,6 +229,7 @@ mod normal;
 mod pair_check;
 pub mod rolling;
 mod rotation;
+mod sifted;
 mod spheres;
 mod spread;
 mod store;

@@ -12,13 +12,16 @@
 use crate::batch::{BlockGroup, BlockPairs};
 use crate::body::{Sphere, Wall, effective_mass};
 use crate::checked::CheckedSphere;
+use crate::engine::sealed::Deferred;
 use crate::engine::{BoundLaw, Law};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
 use crate::executor::{Executor, Serial};
 use crate::float::Float;
-use crate::geometry::{Separation, reaches_wall};
+use crate::geometry::reaches_wall;
 use crate::law::{ContactForces, Interaction};
 use crate::pair_check::check_places;
+pub(crate) use crate::sifted::SIFT;
+use crate::sifted::{Sifts, shift};
 use crate::spheres::Spheres;
 use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
@@ -758,12 +761,6 @@ impl<F: Float> Sink<'_, F> {
     }
 }
 
-/// Pair `k`'s shift of its sphere `j` (none when the list has no shifts).
-#[inline(always)]
-fn shift<F: Float>(shifts: &[Vec3<F>], k: usize) -> Vec3<F> {
-    shifts.get(k).copied().unwrap_or(Vec3::ZERO)
-}
-
 /// `sphere` moved by `shift`.
 #[inline(always)]
 fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
@@ -772,9 +769,6 @@ fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
         ..sphere
     }
 }
-
-/// Candidate pairs sifted for contact at a time.
-pub(crate) const SIFT: usize = 256;
 
 /// A stretch of the pair list: its pairs, their shifts (or none), and the list place of its
 /// first pair.
@@ -805,12 +799,12 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
         }
         let states = (&mut *states, &*saved);
         let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
-        let found = staged.sift(spheres, (chunk, shifts));
+        let found = staged.sifts.sift(spheres, (chunk, shifts));
         sink.begin_chunk(first, chunk.len());
         let failed = if BLOCKS {
             let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
             if let (None, Some(stage)) = (failed, &staged.blocks) {
-                for &k in &staged.touching[..found] {
+                for &k in &staged.sifts.places[..found] {
                     let k = usize::from(k);
                     if stage.touches[k] {
                         let pair = chunk[k].map(|x| x as usize);
@@ -902,10 +896,9 @@ fn next_reaching<F: Float, S: Default>(
     None
 }
 
-/// The working memory of one chunk: the sifted places (in list order), the same sorted by pair
-/// of materials, each place's forces and whether it touches, and the batch path's blocks.
+/// The working memory of one chunk: the sifted pairs and the batch path's blocks.
 struct Staged<F: Float, S> {
-    touching: [u16; SIFT],
+    sifts: Sifts<F>,
     /// The batch path's part, made only by the blocks route (tens of kB that the single calls
     /// would otherwise clear for nothing, once per thread's stretch).
     blocks: Option<BlockStage<F, S>>,
@@ -923,32 +916,9 @@ struct BlockStage<F: Float, S> {
 impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
     fn new() -> Self {
         Self {
-            touching: [0; SIFT],
+            sifts: Sifts::new(),
             blocks: None,
         }
-    }
-
-    /// The places in `chunk` of the pairs the one-contact path evaluates (overlapping or
-    /// coincident), kept in `touching`. Returns how many. Sifting first keeps the coin toss of
-    /// touching or not out of the contact evaluation's branches.
-    #[inline(always)]
-    fn sift(
-        &mut self,
-        spheres: &impl Spheres<F>,
-        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-    ) -> usize {
-        let mut found = 0;
-        for (k, &[i, j]) in chunk.iter().enumerate() {
-            let (i, j) = (i as usize, j as usize);
-            let separation = Separation::between(
-                (spheres.position(i), spheres.radius(i)),
-                (spheres.position(j) + shift(shifts, k), spheres.radius(j)),
-            );
-            let evaluate = separation.needs_evaluation();
-            self.touching[found] = k as u16;
-            found += usize::from(evaluate);
-        }
-        found
     }
 
     /// The sifted pairs one at a time through the one-contact path, each touching pair committed
@@ -970,9 +940,10 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             usize,
         ),
     ) -> Option<(usize, ContactError)> {
+        L::sifted_roots(&mut self.sifts, found, saved, Deferred(()));
         let mut probe = F::ZERO;
         let mut finite_states = true;
-        for (place, &k) in self.touching[..found].iter().enumerate() {
+        for (place, &k) in self.sifts.places[..found].iter().enumerate() {
             let k = usize::from(k);
             let [i, j] = chunk[k].map(|x| x as usize);
             let law = &mut bound[spheres.material(i) as usize][spheres.material(j) as usize];
@@ -980,8 +951,9 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                 CheckedSphere::trusted(spheres.sphere(i)),
                 CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
             );
+            let sifted = self.sifts.pair(place);
             let mut state = saved[k];
-            match law.sphere_sphere_deferred(&a, &b, &mut state) {
+            match law.sphere_sphere_sifted(&a, &b, &sifted, &mut state) {
                 Ok(Interaction::Touching(forces)) => {
                     probe += forces.finite_probe();
                     finite_states &= state.is_finite();
@@ -989,7 +961,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                 }
                 Ok(Interaction::Apart) => {}
                 Err(error) => {
-                    let earlier = &self.touching[..place];
+                    let earlier = &self.sifts.places[..place];
                     let refused = first_refused(spheres, (chunk, shifts), saved, earlier, bound);
                     return Some(refused.unwrap_or((k, error)));
                 }
@@ -1004,7 +976,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             spheres,
             (chunk, shifts),
             saved,
-            &self.touching[..found],
+            &self.sifts.places[..found],
             bound,
         )
     }
@@ -1028,7 +1000,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         };
         // A counting sort by pair of materials, stable, so each pair's run keeps list order.
         let mut counts = [[0usize; MATERIALS]; MATERIALS];
-        for &k in &self.touching[..found] {
+        for &k in &self.sifts.places[..found] {
             let (a, b) = key(usize::from(k));
             counts[a][b] += 1;
         }
@@ -1047,7 +1019,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             group: BlockGroup::default(),
         });
         let mut place = starts;
-        for &k in &self.touching[..found] {
+        for &k in &self.sifts.places[..found] {
             let (a, b) = key(usize::from(k));
             stage.sorted[place[a][b]] = k;
             place[a][b] += 1;

@@ -67,11 +67,12 @@ fn stored_spring_step<F: Float, M: MathBackend<F>>(
     parameters: &TangentialParameters<F>,
     state: &SpringDisplacement<F>,
     contact: &TangentialInput<F>,
-    slide: Slide,
-    keep: Keep,
+    (slide, keep): (Slide, Keep),
+    turned: Option<Vec3<F>>,
 ) -> TangentialOutput<F, SpringDisplacement<F>> {
-    let displacement = rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal)
-        + contact.slip_velocity * contact.time_step;
+    let turned = turned
+        .unwrap_or_else(|| rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal));
+    let displacement = turned + contact.slip_velocity * contact.time_step;
     let (force, sliding) = parameters.slide::<M>(displacement, contact, slide);
     let kept = match keep {
         Keep::Capped if sliding => {
@@ -108,7 +109,25 @@ macro_rules! stored_spring_model {
                 state: &SpringDisplacement<F>,
                 contact: &TangentialInput<F>,
             ) -> TangentialOutput<F, SpringDisplacement<F>> {
-                stored_spring_step::<F, M>(&self.0, state, contact, $slide, $keep)
+                stored_spring_step::<F, M>(&self.0, state, contact, ($slide, $keep), None)
+            }
+
+            const TURNS: bool = true;
+
+            #[inline(always)]
+            fn stored_vector(state: &SpringDisplacement<F>) -> Vec3<F> {
+                state.displacement
+            }
+
+            #[inline(always)]
+            fn force_turned<M: MathBackend<F>>(
+                &self,
+                state: &SpringDisplacement<F>,
+                contact: &TangentialInput<F>,
+                turned: Vec3<F>,
+            ) -> TangentialOutput<F, SpringDisplacement<F>> {
+                let (slide, keep) = ($slide, $keep);
+                stored_spring_step::<F, M>(&self.0, state, contact, (slide, keep), Some(turned))
             }
 
             fn stored_energy(&self, state: &SpringDisplacement<F>) -> F {

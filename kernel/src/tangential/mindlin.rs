@@ -118,9 +118,11 @@ fn mindlin_step<F: Float, M: MathBackend<F>>(
     state: &MindlinSpring<F>,
     contact: &TangentialInput<F>,
     keep: Keep,
+    turned: Option<Vec3<F>>,
 ) -> TangentialOutput<F, MindlinSpring<F>> {
     let radius = contact.contact_radius;
-    let rotated = rotate_into_tangent_plane::<F, M>(state.force, contact.normal);
+    let rotated =
+        turned.unwrap_or_else(|| rotate_into_tangent_plane::<F, M>(state.force, contact.normal));
     // Unloading shrinks the spring with the contact (`a < a_prev`); loading does not grow it.
     let unloaded = if radius < state.contact_radius {
         rotated * (radius / state.contact_radius)
@@ -172,7 +174,24 @@ macro_rules! stored_mindlin_model {
                 state: &MindlinSpring<F>,
                 contact: &TangentialInput<F>,
             ) -> TangentialOutput<F, MindlinSpring<F>> {
-                mindlin_step::<F, M>(&self.0, state, contact, $keep)
+                mindlin_step::<F, M>(&self.0, state, contact, $keep, None)
+            }
+
+            const TURNS: bool = true;
+
+            #[inline(always)]
+            fn stored_vector(state: &MindlinSpring<F>) -> Vec3<F> {
+                state.force
+            }
+
+            #[inline(always)]
+            fn force_turned<M: MathBackend<F>>(
+                &self,
+                state: &MindlinSpring<F>,
+                contact: &TangentialInput<F>,
+                turned: Vec3<F>,
+            ) -> TangentialOutput<F, MindlinSpring<F>> {
+                mindlin_step::<F, M>(&self.0, state, contact, $keep, Some(turned))
             }
 
             fn stored_energy(&self, state: &MindlinSpring<F>) -> F {

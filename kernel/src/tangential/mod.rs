@@ -125,6 +125,38 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
         contact: &TangentialInput<F>,
     ) -> TangentialOutput<F, Self::State>;
 
+    /// Whether the step turns a stored vector into the current tangent plane
+    /// ([`rotate_into_tangent_plane`]) before using it: then the list seam turns it for a whole
+    /// chunk of contacts before evaluating them ([`force_turned`](Self::force_turned)). Only
+    /// the kernel reads it.
+    #[doc(hidden)]
+    const TURNS: bool = false;
+
+    /// The stored vector the step turns ([`TURNS`](Self::TURNS)); zero for a law that turns
+    /// none. Only the kernel calls it.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn stored_vector(state: &Self::State) -> Vec3<F> {
+        let _ = state;
+        Vec3::ZERO
+    }
+
+    /// [`force`](Self::force) with `turned` the [`stored_vector`](Self::stored_vector) of the
+    /// same state already turned into the tangent plane of the contact's normal by
+    /// [`rotate_into_tangent_plane`] with the same backend: the same bits. Only the kernel calls
+    /// it.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn force_turned<M: MathBackend<F>>(
+        &self,
+        state: &Self::State,
+        contact: &TangentialInput<F>,
+        turned: Vec3<F>,
+    ) -> TangentialOutput<F, Self::State> {
+        let _ = turned;
+        self.force::<M>(state, contact)
+    }
+
     /// The elastic energy the stored spring of `state` holds (J): `k_t |xi|^2 / 2` for the
     /// stored-displacement laws, `|F_s|^2 / (2 k_t(a))` for the stored Mindlin laws, zero for a
     /// law that stores nothing (its spring's work is not kept, so it counts as dissipated).
