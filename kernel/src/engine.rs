@@ -15,9 +15,9 @@ pub(crate) mod sealed {
     /// Only the kernel's [`ContactLaw`](crate::ContactLaw) is a [`Law`](super::Law).
     pub trait Sealed {}
 
-    /// Only the kernel can make one: it opens the hook that leaves the finiteness test of a
-    /// contact's results to its caller, which only the list seam calls (it tests a whole chunk
-    /// at once and re-runs a failing chunk checked).
+    /// Only the kernel can make one: it opens the list seam's hooks, which take a chunk's roots
+    /// ahead of its contacts and leave the finiteness test of a contact's results to the seam
+    /// (it tests a whole chunk at once and re-runs a failing chunk checked).
     #[derive(Clone, Copy, Debug)]
     pub struct Deferred(pub(crate) ());
 
@@ -135,10 +135,11 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
     /// The roots of a sifted chunk's first `found` pairs ([`sealed::Sifts`]), by the law's
-    /// backend, taken before any of them is evaluated, in loops the processor overlaps (and the
-    /// compiler widens): each pair's `1 / d` and overlap, and its stored state's (in
-    /// `states`, at the pair's place in the chunk) [stored vector](crate::TangentialModel::stored_vector)
-    /// turned into its tangent plane. Only the kernel can call it.
+    /// backend, taken before any of them is evaluated, in loops whose iterations the processor
+    /// overlaps: each pair's `1 / d` and overlap (a loop the compiler widens with the `Std`
+    /// backend), and its stored state's (`states[k]`, `k` its index in the chunk)
+    /// [stored vector](crate::TangentialModel::stored_vector) turned into its tangent plane.
+    /// Only the kernel can call it.
     #[doc(hidden)]
     fn sifted_roots(
         sifts: &mut sealed::Sifts<Self::Float>,

@@ -526,7 +526,8 @@ where
     /// stable step that the step tolerates. `allowed` is the step's
     /// [`allowed_rate_squared`](Self::allowed_rate_squared), derived once per step by a bound law.
     /// With `FINITE` false the forces and the new state are not tested for finiteness: the
-    /// caller tests them ([`Law::evaluate_sifted_deferred`]).
+    /// caller tests them ([`Law::evaluate_sifted_deferred`]). `turned` is the tangential slot's
+    /// stored vector already turned into the tangent plane, when the caller turned it.
     #[inline(always)]
     fn interaction<const FINITE: bool>(
         &self,
@@ -587,7 +588,8 @@ where
     }
 
     /// The forces of a touching contact, the state to keep and the contact's tangent stiffness
-    /// ([`NormalModel::tangent_stiffness`]), not yet checked for finiteness or stability. Straight-line code apart from
+    /// ([`NormalModel::tangent_stiffness`]), not yet checked for finiteness or stability; `turned`
+    /// as for [`interaction`](Self::interaction). Straight-line code apart from
     /// what the slots branch on, so the batch path ([`crate::batch`]) runs it for every lane and
     /// keeps it where the lane touches: one computation for both paths, the same bits.
     #[inline(always)]

@@ -42,7 +42,8 @@ pub enum Route {
     /// more than that saves: 1.3 times slower than one at a time in `list_bench` (`x86-64-v3`,
     /// 10,000 spheres).
     Blocks,
-    /// One sifted pair at a time through the one-contact path.
+    /// One sifted pair at a time by the one-contact path's formulas, the chunk's roots taken
+    /// ahead ([`crate::Law::sifted_roots`]).
     OneAtATime,
 }
 
@@ -921,7 +922,8 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         }
     }
 
-    /// The sifted pairs one at a time through the one-contact path, each touching pair committed
+    /// The sifted pairs one at a time by the one-contact path's formulas, their roots taken for
+    /// the whole chunk first ([`Law::sifted_roots`]), each touching pair committed
     /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
     /// forces the caller puts back); returns the first refused. The forces and states are tested
     /// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
