@@ -229,11 +229,12 @@ fn wall_overlap<F: Float>(position: Vec3<F>, radius: F, wall: &Wall<F>) -> (F, F
 /// Whether an overlap is evaluated: positive, or NaN (finite inputs whose distance overflowed),
 /// which falls through and is reported as a non-finite result.
 #[inline(always)]
+#[allow(
+    clippy::neg_cmp_op_on_partial_ord,
+    reason = "NaN must reach: not `overlap > 0`"
+)]
 fn reaches<F: Float>(overlap: F) -> bool {
-    !matches!(
-        overlap.partial_cmp(&F::ZERO),
-        Some(core::cmp::Ordering::Less | core::cmp::Ordering::Equal)
-    )
+    !(overlap <= F::ZERO)
 }
 
 /// Whether [`sphere_wall`] evaluates a sphere at `position` of `radius` against `wall` (by the

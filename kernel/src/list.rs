@@ -26,7 +26,7 @@ use crate::spheres::Spheres;
 use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
-use crate::vector::Vec3;
+use crate::vector::{Vec3, all_finite};
 
 /// How [`MaterialTable::evaluate_by`] evaluates the touching pairs: the same results by every
 /// route.
@@ -334,16 +334,6 @@ fn check_walls<F, const MATERIALS: usize>(walls: &[MaterialWall<F>]) -> Result<(
         }),
         None => Ok(()),
     }
-}
-
-/// True when every component of `vectors` is finite: one probe per component (`x * 0` is `0`
-/// for finite `x`, NaN otherwise), summed with no branch per vector.
-fn all_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
-    let mut probe = Vec3::ZERO;
-    for v in vectors {
-        probe += *v * F::ZERO;
-    }
-    probe.x + probe.y + probe.z == F::ZERO
 }
 
 impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {

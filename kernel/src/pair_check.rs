@@ -10,7 +10,7 @@ use core::cmp::Ordering;
 
 use crate::float::Float;
 use crate::list::{ListArray, ListError};
-use crate::vector::Vec3;
+use crate::vector::{Vec3, all_finite};
 
 /// Checks a pair list as an engine builds it, for `spheres` spheres: `shifts` none or one per
 /// pair, every index inside the spheres, every shift finite, and no contact named twice. Two
@@ -86,14 +86,18 @@ pub(crate) fn check_places<F: Float>(
     (pairs, shifts): (&[[u32; 2]], &[Vec3<F>]),
     spheres: usize,
 ) -> Result<(), ListError> {
-    if let Some(pair) = pairs
-        .iter()
-        .position(|&[i, j]| i as usize >= spheres || j as usize >= spheres)
-    {
-        return Err(ListError::PairIndex { pair });
+    // Reductions with no branch per pair; the first offender is looked for only when one fails.
+    let largest = pairs.iter().fold(0, |m: u32, &[i, j]| m.max(i).max(j));
+    if largest as usize >= spheres {
+        let outside = |&[i, j]: &[u32; 2]| i as usize >= spheres || j as usize >= spheres;
+        if let Some(pair) = pairs.iter().position(outside) {
+            return Err(ListError::PairIndex { pair });
+        }
     }
-    if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
-        return Err(ListError::Shift { pair });
+    if !all_finite(shifts) {
+        if let Some(pair) = shifts.iter().position(|shift| !shift.is_finite()) {
+            return Err(ListError::Shift { pair });
+        }
     }
     Ok(())
 }

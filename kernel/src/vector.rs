@@ -124,3 +124,21 @@ impl<F: Float> Mul<F> for Vec3<F> {
         Self::new(self.x * s, self.y * s, self.z * s)
     }
 }
+
+/// True when every component of `vectors` is finite: each component's `x * 0` probe summed (see
+/// [`crate::float::all_finite`]), in four sums side by side so that no addition waits on the one
+/// before it.
+pub(crate) fn all_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
+    let mut probes = [Vec3::ZERO; 4];
+    let mut quads = vectors.chunks_exact(4);
+    for quad in &mut quads {
+        for (probe, v) in probes.iter_mut().zip(quad) {
+            *probe += *v * F::ZERO;
+        }
+    }
+    for v in quads.remainder() {
+        probes[0] += *v * F::ZERO;
+    }
+    let probe = (probes[0] + probes[1]) + (probes[2] + probes[3]);
+    probe.x + probe.y + probe.z == F::ZERO
+}
