@@ -671,6 +671,19 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             Err(ListError::Load { sphere: 13 })
         );
     }
+    // In every place of a list whose length is not a multiple of the probes' four sums: the
+    // first bad load is named wherever it sits (the sums and the remainder after them).
+    let few = Mixture::new(7, 3);
+    let few_dt = t.coarse_time_step(1.0e-6, &few.arrays(), &walls).unwrap();
+    for sphere in 0..7 {
+        for torque in [false, true] {
+            let poisoned = Some((sphere, torque));
+            assert_eq!(
+                try_evaluate_loaded(&t, &few.arrays(), (&few.pairs, &walls), few_dt, poisoned),
+                Err(ListError::Load { sphere })
+            );
+        }
+    }
     // A pair naming a sphere past the arrays.
     let mut pairs = m.pairs.clone();
     pairs[3] = [2, 20];

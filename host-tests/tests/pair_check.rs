@@ -114,6 +114,20 @@ fn bad_lists_are_named_before_repeats() {
         ),
         Err(ListError::Shift { pair: 1 })
     );
+    // A bad shift or index in every place of a list of 7 (the finiteness probe's four sums and
+    // the remainder after them), named; an index equal to the sphere count is past the arrays.
+    let pairs: Vec<[u32; 2]> = (0..7).map(|k| [k, k + 1]).collect();
+    for pair in 0..7 {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut shifts = vec![Vec3::new(0.01, 0.0, 0.0); 7];
+            shifts[pair].z = bad;
+            assert_eq!(checked(&pairs, &shifts, 8), Err(ListError::Shift { pair }));
+        }
+        let mut past = pairs.clone();
+        past[pair][pair % 2] = 8;
+        assert_eq!(checked(&past, none, 8), Err(ListError::PairIndex { pair }));
+    }
+    assert_eq!(checked(&pairs, none, 8), Ok(()));
     let text = ListError::RepeatedPair { pair: 4, first: 1 }.to_string();
     assert!(text.contains("pair 4 repeats pair 1"), "{text}");
 }
