@@ -14,7 +14,8 @@
 #   3d. compute pair/local (single()) against the list entry's forces;
 #   4. speed inside the engine against the native styles, linear and Hertz, portable and
 #      x86-64-v3 builds (printed, not asserted);
-#   5. bad input stops LAMMPS with a clear ERROR.
+#   5. bad input stops LAMMPS with a clear ERROR;
+#   6. a coarse step taken knowingly (keyword coarse): the run goes on, each style warns once.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -692,7 +693,8 @@ bad "negative friction" "soft/sphere stateless 1000 0.9 285.7 0.5 -0.5" "mu (fri
 bad "unknown law" "soft/sphere hertz 1000 0.9 285.7 0.5 0.5" "unknown law 'hertz'" 1e-6
 bad "time step past the stability limit" "soft/sphere aa 1000 0.9 285.7 0.5 0.5" "stability limit" 1e-3
 # Stable (the limit is about 4.5e-5 s here) but past the accuracy limit (about 6.5e-6 s).
-bad "time step past the accuracy limit" "soft/sphere aa 1000 0.9 285.7 0.5 0.5" "accuracy limit" 2e-5
+bad "time step past the accuracy limit" "soft/sphere aa 1000 0.9 285.7 0.5 0.5" "accuracy limit.*add the keyword coarse" 2e-5
+bad "time step past the stability limit, coarse" "soft/sphere aa 1000 0.9 285.7 0.5 0.5 coarse" "stability limit" 1e-3
 # Per-type coefficients and the Hertz laws: two types, two atoms 0.9 mm apart (1 mm spheres).
 bad_pairs() { # name, expected words, then the pair lines
   local name="$1" words="$2"
@@ -739,6 +741,40 @@ bad_pairs "negative rolling friction" "mu_r (rolling friction) must not be negat
 bad_pairs "a Hertz contact past its declared impact" "contact of atoms 1 and 2: the contact is stiffer" \
   "pair_style soft/sphere impact 0.001" "pair_coeff * * hertz/aa 5e6 0.3 0.9 0.5 0.5" \
   "set atom 2 x 0.0058" "timestep 5e-5"
+
+# 6. A coarse step taken knowingly (the keyword coarse): the same stable but inaccurate step of
+# 2e-5 s, two atoms meeting head-on at 0.5 m/s and a third falling onto the floor. The run goes
+# on, and each style warns once with the contacts it evaluated past the accuracy limit.
+cat > "$work/coarse.in" <<'COARSE'
+units si
+atom_style sphere
+comm_modify vel yes
+region box block 0 0.01 0 0.01 0 0.01
+create_box 1 box
+create_atoms 1 single 0.004 0.005 0.005
+create_atoms 1 single 0.0051 0.005 0.005
+create_atoms 1 single 0.008 0.005 0.0006
+set type 1 diameter 1e-3 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.5
+set atom 2 vx -0.5
+set atom 3 vz -0.5
+plugin load ${plugin}
+pair_style soft/sphere aa 1000 0.9 285.7 0.5 0.5 coarse
+pair_coeff * *
+fix integrate all nve/sphere
+fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 coarse zplane 0.0 NULL
+timestep 2e-5
+run 200
+COARSE
+output="$(cd "$work" && "$lmp" -in coarse.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+pair_warnings="$(printf '%s\n' "$output" | grep -c 'WARNING: pair_style soft/sphere: coarse step: contacts past .* at step [0-9]*: [1-9]' || true)"
+wall_warnings="$(printf '%s\n' "$output" | grep -c 'WARNING: fix wall/soft/sphere: coarse step: contacts past .* at step [0-9]*: [1-9]' || true)"
+ok=1
+if [ $status -eq 0 ] && [ "$pair_warnings" -eq 1 ] && [ "$wall_warnings" -eq 1 ] && ! printf '%s' "$output" | grep -q '^ERROR'; then ok=0; fi
+result "coarse step taken knowingly (pair_style and fix wall keyword coarse)" "$ok" \
+  "exit $status, pair warnings $pair_warnings, wall warnings $wall_warnings: $(printf '%s\n' "$output" | grep -m1 'coarse step' || true)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -399,6 +399,11 @@ typedef struct {
    * The atoms (indices into the arrays) an error is about; -1 when none.
    */
   int64_t atoms[2];
+  /**
+   * Touching contacts past their law's accuracy limit, evaluated because the table was
+   * prepared for a coarse step (`ss_table_prepare_coarse_*`); 0 otherwise.
+   */
+  size_t inaccurate;
 } ss_list_report;
 
 /**
@@ -1818,6 +1823,20 @@ int32_t ss_table_prepare_f64(ss_table_f64 *table,
                              ss_table_report_f64 *report);
 
 /**
+ * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
+ * within every pair's stability limit is accepted (`SS_ERR_UNSTABLE_TIME_STEP` past
+ * it), and each evaluation counts its contacts past their law's accuracy limit in
+ * `ss_list_report.inaccurate` (they may rebound faster than the restitution allows).
+ *
+ * # Safety
+ * As `ss_table_prepare_*`.
+ */
+int32_t ss_table_prepare_coarse_f64(ss_table_f64 *table,
+                                    double time_step,
+                                    const double *lightest_mass,
+                                    ss_table_report_f64 *report);
+
+/**
  * The whole neighbour list in one call: every pair `(i, j)` with the law of their
  * materials, its state read from the history (zero where `history` is null), each
  * contact the same bits as `ss_sphere_sphere_*` with that law. On success the forces
@@ -2111,6 +2130,20 @@ int32_t ss_table_prepare_f32(ss_table_f32 *table,
                              float time_step,
                              const float *lightest_mass,
                              ss_table_report_f32 *report);
+
+/**
+ * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
+ * within every pair's stability limit is accepted (`SS_ERR_UNSTABLE_TIME_STEP` past
+ * it), and each evaluation counts its contacts past their law's accuracy limit in
+ * `ss_list_report.inaccurate` (they may rebound faster than the restitution allows).
+ *
+ * # Safety
+ * As `ss_table_prepare_*`.
+ */
+int32_t ss_table_prepare_coarse_f32(ss_table_f32 *table,
+                                    float time_step,
+                                    const float *lightest_mass,
+                                    ss_table_report_f32 *report);
 
 /**
  * The whole neighbour list in one call: every pair `(i, j)` with the law of their

@@ -5,7 +5,7 @@
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_prepare_coarse:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -273,7 +273,25 @@ macro_rules! entry_points {
             report: *mut table::ss_table_report<$real>,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_prepare(table, time_step, lightest_mass, report) }
+            unsafe { table::table_prepare(table, (time_step, false), lightest_mass, report) }
+        }
+
+        /// As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
+        /// within every pair's stability limit is accepted (`SS_ERR_UNSTABLE_TIME_STEP` past
+        /// it), and each evaluation counts its contacts past their law's accuracy limit in
+        /// `ss_list_report.inaccurate` (they may rebound faster than the restitution allows).
+        ///
+        /// # Safety
+        /// As `ss_table_prepare_*`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_prepare_coarse(
+            table: *mut table::ss_table<$real>,
+            time_step: $real,
+            lightest_mass: *const $real,
+            report: *mut table::ss_table_report<$real>,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_prepare(table, (time_step, true), lightest_mass, report) }
         }
 
         /// The whole neighbour list in one call: every pair `(i, j)` with the law of their

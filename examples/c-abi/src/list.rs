@@ -264,6 +264,7 @@ where
         };
         report.contacts = stats.pair_contacts;
         report.sliding = stats.sliding_contacts;
+        report.inaccurate = stats.inaccurate_contacts;
         // Scatter: touch flags and (when advancing) states, in list order again. A neighbour
         // "touches" when it keeps a state: the kernel relaxes an apart pair's state to zero, and
         // a host that drops the state of a neighbour that does not touch (as LAMMPS does when it
@@ -492,6 +493,7 @@ where
         };
         report.contacts = stats.wall_contacts;
         report.sliding = stats.sliding_contacts;
+        report.inaccurate = stats.inaccurate_contacts;
         if advance && values > 0 {
             for &k in &work.clear {
                 for w in 0..walls.count {

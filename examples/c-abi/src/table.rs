@@ -220,6 +220,9 @@ pub struct ss_list_report {
     pub sliding: usize,
     /// The atoms (indices into the arrays) an error is about; -1 when none.
     pub atoms: [i64; 2],
+    /// Touching contacts past their law's accuracy limit, evaluated because the table was
+    /// prepared for a coarse step (`ss_table_prepare_coarse_*`); 0 otherwise.
+    pub inaccurate: usize,
 }
 
 /// A table: its coefficients as given, the laws and the step once prepared, and the working
@@ -507,8 +510,14 @@ where
     }
 
     /// Builds every law and checks `dt` against each pair of materials present (the lightest
-    /// mass of each; absent where it is not a positive finite number).
-    fn prepare(&mut self, dt: F, lightest: &[F], report: &mut ss_table_report<F>) -> i32 {
+    /// mass of each; absent where it is not a positive finite number), for accuracy, or for
+    /// stability only when `coarse`.
+    fn prepare(
+        &mut self,
+        (dt, coarse): (F, bool),
+        lightest: &[F],
+        report: &mut ss_table_report<F>,
+    ) -> i32 {
         self.ready = None;
         // Every table has a material 0 (`new_table` refuses none): its law seeds the table.
         let mut table = match self.law(0, 0) {
@@ -556,7 +565,12 @@ where
             mass: &mass,
             material: &material,
         };
-        let step = match table.time_step(dt, &spheres, &[]) {
+        let step = if coarse {
+            table.coarse_time_step(dt, &spheres, &[])
+        } else {
+            table.time_step(dt, &spheres, &[])
+        };
+        let step = match step {
             Ok(step) => step,
             Err(ListError::TimeStep { materials, error }) => {
                 report.materials = materials.map(i64::from);
@@ -686,7 +700,7 @@ pub(crate) unsafe fn table_set<F: Float>(
 /// As the exported preparers.
 pub(crate) unsafe fn table_prepare<F: Float>(
     table: *mut ss_table<F>,
-    time_step: F,
+    time_step: (F, bool),
     lightest_mass: *const F,
     report: *mut ss_table_report<F>,
 ) -> i32 {
@@ -759,6 +773,7 @@ pub(crate) unsafe fn reported(
         contacts: 0,
         sliding: 0,
         atoms: [-1, -1],
+        inaccurate: 0,
     };
     let code = run(&mut found);
     // SAFETY: null is allowed; the caller promises validity otherwise.

@@ -516,6 +516,69 @@ fn the_setup_evaluation_leaves_the_history_and_flags_the_neighbours_that_keep_a_
     unsafe { ss_table_free_f64(table) };
 }
 
+/// A coarse step is taken only when asked for (`ss_table_prepare_coarse_f64`): within the
+/// stability limit, its contacts past the accuracy limit are evaluated and counted; the plain
+/// prepare refuses the same step, and neither takes one past the stability limit.
+#[test]
+fn a_coarse_step_is_taken_when_asked_and_its_inaccurate_contacts_counted() {
+    let table = table(SS_MODEL_AA);
+    let mut host = Host::new(5, 3);
+    let mut lightest = [f64::INFINITY; 3];
+    for (&m, &t) in host.mass.iter().zip(&host.types) {
+        let l = &mut lightest[(t - 1) as usize];
+        *l = l.min(m);
+    }
+    let mut report = ss_table_report::<f64>::default();
+    // SAFETY: valid pointers.
+    let prepare = |dt: f64, coarse: bool, report: &mut ss_table_report<f64>| unsafe {
+        if coarse {
+            ss_table_prepare_coarse_f64(table, dt, lightest.as_ptr(), report)
+        } else {
+            ss_table_prepare_f64(table, dt, lightest.as_ptr(), report)
+        }
+    };
+    // Far past every limit: both refuse it as unstable, and report the first pair's stability
+    // limit; 0.9 of the lowest of them is stable for every pair.
+    let mut coarse = 1.0;
+    assert_eq!(
+        prepare(coarse, false, &mut report),
+        SS_ERR_UNSTABLE_TIME_STEP
+    );
+    while prepare(coarse, true, &mut report) == SS_ERR_UNSTABLE_TIME_STEP {
+        coarse = 0.9 * report.limit;
+    }
+    assert!(coarse < 1.0);
+    // That step: taken by the coarse prepare, inaccurate for the plain one.
+    assert_eq!(prepare(coarse, true, &mut report), SS_OK);
+    assert_eq!(
+        prepare(coarse, false, &mut report),
+        SS_ERR_INACCURATE_TIME_STEP
+    );
+    let accurate = report.limit;
+    assert!(accurate < 0.5 * coarse, "{accurate} {coarse}");
+    assert_eq!(prepare(coarse, true, &mut report), SS_OK);
+    let (code, coarse_report) = host.clone().evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!(code, SS_OK);
+    assert!(coarse_report.contacts > 40, "{coarse_report:?}");
+    assert!(
+        coarse_report.inaccurate > 0 && coarse_report.inaccurate <= coarse_report.contacts,
+        "{coarse_report:?}"
+    );
+    // An accurate step (below every pair's accuracy limit), prepared either way, counts none.
+    let mut fine = accurate;
+    while prepare(fine, false, &mut report) == SS_ERR_INACCURATE_TIME_STEP {
+        fine = 0.9 * report.limit;
+    }
+    for asked in [false, true] {
+        assert_eq!(prepare(fine, asked, &mut report), SS_OK);
+        let (code, report) = host.evaluate(table, 1, 0, |_, _, _| {});
+        assert_eq!((code, report.inaccurate), (SS_OK, 0), "{report:?}");
+        assert!(report.contacts > 40);
+    }
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
 /// Every bad input: its code, the atoms it names, and nothing changed.
 #[test]
 fn bad_lists_are_refused_with_nothing_changed() {

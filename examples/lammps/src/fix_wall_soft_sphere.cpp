@@ -18,13 +18,13 @@ using namespace FixConst;
 
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
-    impact_speed(0.0), history(nullptr), advance(true)
+    impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true)
 {
   const std::string style = "fix wall/soft/sphere";
   if (narg < 12)
     error->all(FLERR,
                "Illegal fix wall/soft/sphere command: expected LAW and five numbers, "
-               "[rolling mu_r k_r eta_r], [impact V], xplane|yplane|zplane LO HI");
+               "[rolling mu_r k_r eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI");
   if (!atom->sphere_flag) error->all(FLERR, "fix wall/soft/sphere requires atom style sphere");
   model = SoftSphere::model(lmp, style, arg[3]);
   coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
@@ -37,9 +37,12 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     } else if (std::strcmp(arg[k], "impact") == 0 && k + 1 < narg - 3) {
       impact_speed = utils::numeric(FLERR, arg[k + 1], false, lmp);
       k += 2;
+    } else if (std::strcmp(arg[k], "coarse") == 0) {
+      coarse = true;
+      k += 1;
     } else
-      error->all(FLERR, "{}: unknown keyword '{}' (rolling mu_r k_r eta_r, impact V)", style,
-                 arg[k]);
+      error->all(FLERR, "{}: unknown keyword '{}' (rolling mu_r k_r eta_r, impact V, coarse)",
+                 style, arg[k]);
   }
   if (SoftSphere::hertz(model) && !(impact_speed > 0.0))
     error->all(FLERR,
@@ -134,7 +137,8 @@ void FixWallSoftSphere::init()
   // the pair of two of the lightest (half that), which bounds it.
   const double lightest = SoftSphere::smallest_mass(lmp);
   ss_table_report_f64 report;
-  const int code = ss_table_prepare_f64(table, update->dt, &lightest, &report);
+  const int code = coarse ? ss_table_prepare_coarse_f64(table, update->dt, &lightest, &report)
+                          : ss_table_prepare_f64(table, update->dt, &lightest, &report);
   if (code == SS_ERR_UNSTABLE_TIME_STEP)
     error->all(FLERR,
                "{}: the time step {} s is at or past the kernel's stability limit {} s for the "
@@ -143,7 +147,8 @@ void FixWallSoftSphere::init()
   if (code == SS_ERR_INACCURATE_TIME_STEP)
     error->all(FLERR,
                "{}: the time step {} s is at or past the kernel's accuracy limit {} s for the "
-               "lightest spheres: a contact could rebound faster than its restitution allows",
+               "lightest spheres: a contact could rebound faster than its restitution allows "
+               "(add the keyword coarse to take such a step knowingly)",
                style, update->dt, report.limit);
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model),
@@ -211,6 +216,14 @@ void FixWallSoftSphere::forces()
       error->one(FLERR, "fix wall/soft/sphere: atom {} against the wall: {}",
                  atom->tag[report.atoms[0]], SoftSphere::contact_error(code));
     error->one(FLERR, "fix wall/soft/sphere: {}", SoftSphere::contact_error(code));
+  }
+  if (report.inaccurate > 0 && !warned_inaccurate) {
+    warned_inaccurate = true;
+    error->warning(FLERR,
+                   "fix wall/soft/sphere: coarse step: contacts past the kernel's accuracy "
+                   "limit on this rank at step {}: {} (they may rebound faster than their "
+                   "restitution allows); reported once",
+                   update->ntimestep, report.inaccurate);
   }
 }
 

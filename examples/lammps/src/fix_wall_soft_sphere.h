@@ -52,6 +52,8 @@ class FixWallSoftSphere : public Fix {
   int present[WALLS];    // whether LO and HI exist
   double position[WALLS];
   double impact_speed;   // Hertz laws: the declared fastest impact (m/s)
+  bool coarse;           // the step taken knowingly past the accuracy limit
+  bool warned_inaccurate;    // the coarse step's first inaccurate contacts reported
   double **history;      // per atom: the stored state against LO, then HI
   std::vector<int> material;    // zeros: every atom is of the table's one material
   bool advance;

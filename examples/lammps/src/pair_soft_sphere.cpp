@@ -22,7 +22,7 @@ static const char *STYLE = "pair_style soft/sphere";
 
 PairSoftSphere::PairSoftSphere(LAMMPS *lmp) :
     PairGranHookeHistory(lmp), model(-1), style_law(0), rolling(-1), impact_speed(0.0),
-    history_made(0),
+    coarse(0), warned_inaccurate(0), history_made(0),
     table(nullptr)
 {
   std::memset(&style_coefficients, 0, sizeof(style_coefficients));
@@ -57,10 +57,13 @@ void PairSoftSphere::settings(int narg, char **arg)
       if (!(impact_speed > 0.0) || !std::isfinite(impact_speed))
         error->all(FLERR, "{}: the impact speed must be a positive number", STYLE);
       k += 2;
+    } else if (std::strcmp(arg[k], "coarse") == 0) {
+      coarse = 1;
+      k += 1;
     } else
       error->all(FLERR,
                  "Illegal pair_style soft/sphere command: expected [LAW five numbers "
-                 "[rolling mu_r k_r eta_r]] [impact V]");
+                 "[rolling mu_r k_r eta_r]] [impact V] [coarse]");
   }
   // The base class's fields, for what it reports; the forces come from the kernel.
   kn = style_coefficients.normal_stiffness;
@@ -223,7 +226,8 @@ void PairSoftSphere::prepare()
   for (double &m : lightest)
     if (m == 1e300) m = 0.0;
   ss_table_report_f64 report;
-  const int code = ss_table_prepare_f64(table, update->dt, lightest.data(), &report);
+  const int code = coarse ? ss_table_prepare_coarse_f64(table, update->dt, lightest.data(), &report)
+                          : ss_table_prepare_f64(table, update->dt, lightest.data(), &report);
   if (code == SS_OK) return;
   const long a = report.materials[0] + 1, b = report.materials[1] + 1;
   if (code == SS_ERR_MATERIAL)
@@ -241,7 +245,8 @@ void PairSoftSphere::prepare()
     error->all(FLERR,
                "{}: the time step {} s is at or past the kernel's accuracy limit {} s for "
                "types {} and {} (their lightest atoms): a contact could rebound faster than "
-               "its restitution allows",
+               "its restitution allows (add the keyword coarse to the pair_style to take "
+               "such a step knowingly)",
                STYLE, update->dt, report.limit, a, b);
   if (code == SS_ERR_NON_FINITE_INPUT)
     error->all(FLERR, "{}: an atom mass is not finite", STYLE);
@@ -303,6 +308,14 @@ void PairSoftSphere::compute(int eflag, int vflag)
       error->one(FLERR, "{}: atom {}: {}", STYLE, tag(report.atoms[0]),
                  SoftSphere::contact_error(code));
     error->one(FLERR, "{}: {}", STYLE, SoftSphere::contact_error(code));
+  }
+  if (report.inaccurate > 0 && !warned_inaccurate) {
+    warned_inaccurate = 1;
+    error->warning(FLERR,
+                   "{}: coarse step: contacts past the kernel's accuracy limit on this rank "
+                   "at step {}: {} (they may rebound faster than their restitution allows); "
+                   "reported once",
+                   STYLE, update->ntimestep, report.inaccurate);
   }
 
   if (evflag) {
@@ -402,7 +415,7 @@ void PairSoftSphere::transfer_history(double *source, double *target)
   ss_table_mirror_state_f64(table, source, target);
 }
 
-/* Restart files: the law, the declared impact and every type pair's coefficients. The stored
+/* Restart files: the law, the declared impact, the coarse flag and every type pair's coefficients. The stored
  * springs are the history fix's, which writes its own. */
 void PairSoftSphere::write_restart_settings(FILE *fp)
 {
@@ -411,6 +424,7 @@ void PairSoftSphere::write_restart_settings(FILE *fp)
   fwrite(&rolling, sizeof(int), 1, fp);
   fwrite(&style_coefficients, sizeof(style_coefficients), 1, fp);
   fwrite(&impact_speed, sizeof(double), 1, fp);
+  fwrite(&coarse, sizeof(int), 1, fp);
 }
 
 void PairSoftSphere::read_restart_settings(FILE *fp)
@@ -421,12 +435,14 @@ void PairSoftSphere::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &rolling, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &style_coefficients, sizeof(style_coefficients), 1, fp, nullptr, error);
     utils::sfread(FLERR, &impact_speed, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &coarse, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&model, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_law, 1, MPI_INT, 0, world);
   MPI_Bcast(&rolling, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_coefficients, sizeof(style_coefficients), MPI_BYTE, 0, world);
   MPI_Bcast(&impact_speed, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&coarse, 1, MPI_INT, 0, world);
 }
 
 void PairSoftSphere::write_restart(FILE *fp)

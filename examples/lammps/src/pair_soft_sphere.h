@@ -49,6 +49,8 @@ class PairSoftSphere : public PairGranHookeHistory {
   int rolling;                         // SS_ROLLING_*, -1 before any law is given
   ss_coefficients_f64 style_coefficients;
   double impact_speed;                 // Hertz laws: the declared fastest impact (m/s)
+  int coarse;                          // the step taken knowingly past the accuracy limit
+  int warned_inaccurate;               // the coarse step's first inaccurate contacts reported
   std::vector<ss_coefficients_f64> coefficients;    // (ntypes + 1)^2, by type pair
   std::vector<int> given;                           // whether a type pair was given its own
   int history_made;                    // the history size the history fix was made with
