@@ -15,7 +15,8 @@
 #   4. speed inside the engine against the native styles, linear and Hertz, portable and
 #      x86-64-v3 builds (printed, not asserted);
 #   5. bad input stops LAMMPS with a clear ERROR;
-#   6. a coarse step taken knowingly (keyword coarse): the run goes on, each style warns once.
+#   6. a coarse step taken knowingly (keyword coarse): the run goes on, each style warns once;
+#      after read_restart it is asked for again.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -766,6 +767,7 @@ fix integrate all nve/sphere
 fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 coarse zplane 0.0 NULL
 timestep 2e-5
 run 200
+write_restart coarse.restart
 COARSE
 output="$(cd "$work" && "$lmp" -in coarse.in -var plugin "$plugin" -log none 2>&1)"
 status=$?
@@ -775,6 +777,24 @@ ok=1
 if [ $status -eq 0 ] && [ "$pair_warnings" -eq 1 ] && [ "$wall_warnings" -eq 1 ] && ! printf '%s' "$output" | grep -q '^ERROR'; then ok=0; fi
 result "coarse step taken knowingly (pair_style and fix wall keyword coarse)" "$ok" \
   "exit $status, pair warnings $pair_warnings, wall warnings $wall_warnings: $(printf '%s\n' "$output" | grep -m1 'coarse step' || true)"
+# Restart files do not keep the keyword: read back, the run goes on only when pair_style asks
+# for the coarse step again (the coefficients stay), and stops at the accuracy ERROR otherwise.
+restarted() { # the line after read_restart
+  printf '%s\n' 'plugin load ${plugin}' 'read_restart coarse.restart' "$1" \
+    'fix integrate all nve/sphere' \
+    'fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 coarse zplane 0.0 NULL' \
+    'run 50' > "$work/coarse2.in"
+  (cd "$work" && "$lmp" -in coarse2.in -var plugin "$plugin" -log none 2>&1)
+}
+again="$(restarted 'pair_style soft/sphere coarse')"
+again_status=$?
+plain="$(restarted '')"
+plain_status=$?
+ok=1
+if [ $again_status -eq 0 ] && printf '%s' "$again" | grep -q 'Loop time' \
+  && [ $plain_status -ne 0 ] && printf '%s' "$plain" | grep -q '^ERROR.*accuracy limit.*add the keyword coarse'; then ok=0; fi
+result "coarse step after read_restart (asked again / not)" "$ok" \
+  "exit $again_status / $plain_status: $(printf '%s\n' "$plain" | grep -m1 '^ERROR' | cut -c1-90 || true)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

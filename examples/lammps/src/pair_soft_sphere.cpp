@@ -40,6 +40,8 @@ PairSoftSphere::~PairSoftSphere()
 void PairSoftSphere::settings(int narg, char **arg)
 {
   int k = 0;
+  // A coarse step is asked for by each pair_style command that wants it.
+  coarse = 0;
   if (narg >= 6 && std::strcmp(arg[0], "impact") != 0) {
     model = SoftSphere::model(lmp, STYLE, arg[0]);
     style_coefficients = SoftSphere::coefficients(lmp, model, &arg[1]);
@@ -415,8 +417,9 @@ void PairSoftSphere::transfer_history(double *source, double *target)
   ss_table_mirror_state_f64(table, source, target);
 }
 
-/* Restart files: the law, the declared impact, the coarse flag and every type pair's coefficients. The stored
- * springs are the history fix's, which writes its own. */
+/* Restart files: the law, the declared impact and every type pair's coefficients; not the
+ * keyword coarse (a restarted run asks for a coarse step again, or stops at the accuracy
+ * limit). The stored springs are the history fix's, which writes its own. */
 void PairSoftSphere::write_restart_settings(FILE *fp)
 {
   fwrite(&model, sizeof(int), 1, fp);
@@ -424,7 +427,6 @@ void PairSoftSphere::write_restart_settings(FILE *fp)
   fwrite(&rolling, sizeof(int), 1, fp);
   fwrite(&style_coefficients, sizeof(style_coefficients), 1, fp);
   fwrite(&impact_speed, sizeof(double), 1, fp);
-  fwrite(&coarse, sizeof(int), 1, fp);
 }
 
 void PairSoftSphere::read_restart_settings(FILE *fp)
@@ -435,14 +437,12 @@ void PairSoftSphere::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &rolling, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &style_coefficients, sizeof(style_coefficients), 1, fp, nullptr, error);
     utils::sfread(FLERR, &impact_speed, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &coarse, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&model, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_law, 1, MPI_INT, 0, world);
   MPI_Bcast(&rolling, 1, MPI_INT, 0, world);
   MPI_Bcast(&style_coefficients, sizeof(style_coefficients), MPI_BYTE, 0, world);
   MPI_Bcast(&impact_speed, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&coarse, 1, MPI_INT, 0, world);
 }
 
 void PairSoftSphere::write_restart(FILE *fp)
