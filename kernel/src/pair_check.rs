@@ -10,6 +10,7 @@ use core::cmp::Ordering;
 
 use crate::float::Float;
 use crate::list::{ListArray, ListError};
+use crate::sifted::shift;
 use crate::vector::{Vec3, all_finite};
 
 /// Checks a pair list as an engine builds it, for `spheres` spheres: `shifts` none or one per
@@ -52,10 +53,7 @@ pub fn check_pairs<F: Float>(
         return Err(ListError::Length(ListArray::Order));
     }
     check_places((pairs, shifts), spheres)?;
-    let contact = |k: u32| {
-        let shift = shifts.get(k as usize).copied().unwrap_or(Vec3::ZERO);
-        contact_of(pairs[k as usize], shift)
-    };
+    let contact = |k: u32| contact_of(pairs[k as usize], shift(shifts, k as usize));
     for (k, place) in order.iter_mut().enumerate() {
         *place = k as u32;
     }

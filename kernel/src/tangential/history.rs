@@ -126,8 +126,7 @@ macro_rules! stored_spring_model {
                 contact: &TangentialInput<F>,
                 turned: Vec3<F>,
             ) -> TangentialOutput<F, SpringDisplacement<F>> {
-                let (slide, keep) = ($slide, $keep);
-                stored_spring_step::<F, M>(&self.0, state, contact, (slide, keep), Some(turned))
+                stored_spring_step::<F, M>(&self.0, state, contact, ($slide, $keep), Some(turned))
             }
 
             fn stored_energy(&self, state: &SpringDisplacement<F>) -> F {
