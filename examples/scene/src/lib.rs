@@ -28,6 +28,7 @@
 //!   whose integration diverges is reported and the scene refuses to go on.
 //!
 //! With the `alloc` feature, [`OwnedScene`] owns its buffers: a std user writes no buffer code.
+//! With the `vtk` feature (std), [`Frames`] writes the scene as files ParaView opens.
 
 #![no_std]
 #![forbid(unsafe_code)]
@@ -35,6 +36,8 @@
 
 #[cfg(feature = "alloc")]
 extern crate alloc;
+#[cfg(feature = "vtk")]
+extern crate std;
 
 mod buffers;
 mod energy;
@@ -46,6 +49,8 @@ mod parallel;
 mod parking;
 mod step;
 mod view;
+#[cfg(feature = "vtk")]
+mod vtk;
 mod walls;
 
 pub use buffers::{BufferSizes, SceneBuffers};
@@ -57,6 +62,8 @@ pub use owned::{OwnedScene, PAIRS_PER_SPHERE, PARKING};
 pub use parallel::{Executor, Serial};
 pub use parking::Parking;
 pub use view::{ContactBodies, ContactView};
+#[cfg(feature = "vtk")]
+pub use vtk::{Frames, write_contacts, write_spheres};
 pub use walls::{NoWalls, WallSet};
 
 use core::marker::PhantomData;
