@@ -56,18 +56,25 @@ case "$variant" in
   v3) target_dir="$root/target/v3"; suffix="-v3" ;;
   *) say "unknown build '$variant' (portable or v3)"; exit 1 ;;
 esac
-if [ "$variant" = v3 ]; then
-  (cd "$root" && RUSTFLAGS="-C target-cpu=x86-64-v3" cargo build --release -q -p soft-sphere-ffi --target-dir "$target_dir") >&2
+# The C ABI as an engine finds it: installed (examples/c-abi/install.sh, cargo-c) into a prefix
+# under target/, found by the plugin's find_package. SOFT_SPHERE_BUILD_TREE=1 links the build
+# tree's static library instead, for a machine without cargo-c.
+flags=""
+[ "$variant" = v3 ] && flags="-C target-cpu=x86-64-v3"
+prefix="$target_dir/soft-sphere-prefix"
+if [ "${SOFT_SPHERE_BUILD_TREE:-0}" = 1 ]; then
+  (cd "$root" && RUSTFLAGS="$flags" CARGO_TARGET_DIR="$target_dir" \
+    cargo build --release -q -p soft-sphere-ffi) >&2
+  link=(-D SOFT_SPHERE_BUILD_TREE=ON -D SOFT_SPHERE_LIB="$target_dir/release/libsoft_sphere_ffi.a"
+    -D SOFT_SPHERE_INCLUDE="$root/examples/c-abi/include")
 else
-  (cd "$root" && cargo build --release -q -p soft-sphere-ffi) >&2
+  RUSTFLAGS="$flags" CARGO_TARGET_DIR="$target_dir" bash "$root/examples/c-abi/install.sh" "$prefix" >&2
+  link=(-D SOFT_SPHERE_BUILD_TREE=OFF -D CMAKE_PREFIX_PATH="$prefix")
 fi
-# The plugin belongs to this clone: its build sits in the clone's target directory, since a cmake
-# cache is tied to the source path it was made from.
 plugin_build="$root/target/lammps-plugin-build$suffix"
 cmake -S "$here" -B "$plugin_build" -D CMAKE_BUILD_TYPE=Release \
   -D LAMMPS_SOURCE_DIR="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/../src")" \
-  -D LAMMPS_BINARY_DIR="$lammps_build" -D SOFT_SPHERE_LIB="$target_dir/release/libsoft_sphere_ffi.a" \
-  -D SOFT_SPHERE_INCLUDE="$root/examples/c-abi/include" >&2
+  -D LAMMPS_BINARY_DIR="$lammps_build" "${link[@]}" >&2
 cmake --build "$plugin_build" -j "$(nproc)" >&2
 
 echo "lmp=$lmp"

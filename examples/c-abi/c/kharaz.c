@@ -3,6 +3,7 @@
  * Prints "angle e_t" per line, angles 1 to 89 degrees. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include "soft_sphere.h"
 
 static const double RADIUS = 2.5e-3, DENSITY = 2700.0, SPEED = 3.9;
@@ -53,6 +54,11 @@ static int tangential_restitution(int angle_deg, double *e_t) {
 
 int main(int argc, char **argv) {
     (void)argv;
+    /* The library loaded is the one this header describes. */
+    if (strcmp(ss_version(), SS_VERSION_STRING) != 0) {
+        fprintf(stderr, "library %s, header %s\n", ss_version(), SS_VERSION_STRING);
+        return 1;
+    }
     /* A bad parameter is an error code, not a crash. */
     ss_params_f64 bad = {.model = SS_MODEL_AA, .normal_stiffness = -1.0};
     ss_law_f64 *none = NULL;

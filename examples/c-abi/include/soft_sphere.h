@@ -9,6 +9,13 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+/* This header's version; ss_version() returns the loaded library's. */
+#define SS_VERSION_MAJOR 0
+#define SS_VERSION_MINOR 1
+#define SS_VERSION_PATCH 0
+#define SS_VERSION_STRING "0.1.0"
+
+
 /**
  * Success.
  */
@@ -1550,6 +1557,13 @@ int32_t ss_effective_moduli_f32(const ss_material_f32 *i,
                                 const ss_material_f32 *j,
                                 float *effective_modulus,
                                 float *effective_shear_modulus);
+
+/**
+ * The library's version, `"MAJOR.MINOR.PATCH"` (NUL-terminated, static): the crate's version,
+ * which the header's `SS_VERSION_*` macros also hold, so that a host can check at run time
+ * that the library it loaded is the one its header describes (`docs/c-abi.md`, "Versions").
+ */
+const char *ss_version(void);
 
 /**
  * How many laws the C ABI names (`ss_model_code` counts them; the material tables also take

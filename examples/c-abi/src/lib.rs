@@ -44,7 +44,7 @@ pub use types::*;
 
 pub use names::{
     ss_contact_error_text, ss_model_code, ss_model_count, ss_model_is_hertz, ss_model_name,
-    ss_model_of_name, ss_parameter_error_text, ss_parameter_name,
+    ss_model_of_name, ss_parameter_error_text, ss_parameter_name, ss_version,
 };
 
 pub use table::{

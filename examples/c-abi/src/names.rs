@@ -10,6 +10,14 @@ use crate::table::{
 };
 use crate::*;
 
+/// The library's version, `"MAJOR.MINOR.PATCH"` (NUL-terminated, static): the crate's version,
+/// which the header's `SS_VERSION_*` macros also hold, so that a host can check at run time
+/// that the library it loaded is the one its header describes (`docs/c-abi.md`, "Versions").
+#[unsafe(no_mangle)]
+pub extern "C" fn ss_version() -> *const c_char {
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
+}
+
 /// How many laws the C ABI names (`ss_model_code` counts them; the material tables also take
 /// `SS_MODEL_HERTZ_MICROSLIP`, which has no name).
 #[unsafe(no_mangle)]

@@ -89,7 +89,17 @@ fn registry_codes(registry: &str) -> String {
 #[test]
 fn header_is_current() {
     let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).unwrap();
+    let mut config = cbindgen::Config::from_file(crate_dir.join("cbindgen.toml")).unwrap();
+    // The version macros, from the crate's version (as `ss_version()` returns it).
+    config.after_includes = Some(format!(
+        "\n/* This header's version; ss_version() returns the loaded library's. */\n\
+         #define SS_VERSION_MAJOR {}\n#define SS_VERSION_MINOR {}\n#define SS_VERSION_PATCH {}\n\
+         #define SS_VERSION_STRING \"{}\"\n",
+        env!("CARGO_PKG_VERSION_MAJOR"),
+        env!("CARGO_PKG_VERSION_MINOR"),
+        env!("CARGO_PKG_VERSION_PATCH"),
+        env!("CARGO_PKG_VERSION"),
+    ));
     let root = std::fs::read_to_string(crate_dir.join("src/lib.rs")).unwrap();
     // One file: the modules' declarations and re-exports dropped, their paths made local. The
     // registry holds no C item (and its macro input is not Rust cbindgen parses).

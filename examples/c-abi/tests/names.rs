@@ -209,3 +209,23 @@ fn every_parameter_and_error_code_has_its_own_text() {
         assert_eq!(texts.iter().filter(|x| *x == t).count(), 1, "{t}");
     }
 }
+
+#[test]
+fn the_version_is_the_crates_and_the_headers() {
+    // The workspace's version, as Cargo.toml states it and as the header's macros hold it.
+    let manifest = include_str!("../../../Cargo.toml");
+    let stated = manifest
+        .lines()
+        .skip_while(|l| *l != "[workspace.package]")
+        .find_map(|l| l.strip_prefix("version = \""))
+        .and_then(|v| v.strip_suffix('"'))
+        .unwrap();
+    assert_eq!(text(ss_version()), stated);
+    let header = include_str!("../include/soft_sphere.h");
+    let mut parts = stated.split('.');
+    for macro_name in ["SS_VERSION_MAJOR", "SS_VERSION_MINOR", "SS_VERSION_PATCH"] {
+        let line = format!("#define {macro_name} {}\n", parts.next().unwrap());
+        assert!(header.contains(&line), "{line}");
+    }
+    assert!(header.contains(&format!("#define SS_VERSION_STRING \"{stated}\"\n")));
+}

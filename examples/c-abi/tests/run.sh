@@ -34,7 +34,8 @@ else
 fi
 
 if need gfortran gfortran; then
-  gfortran -O2 -J "$out" examples/c-abi/fortran/impact.f90 "$lib/libsoft_sphere_ffi.a" \
+  gfortran -O2 -J "$out" examples/c-abi/fortran/soft_sphere.f90 examples/c-abi/fortran/impact.f90 \
+    "$lib/libsoft_sphere_ffi.a" \
     -lm -lpthread -ldl -o "$out/impact_fortran"
   "$out/impact_fortran" > "$out/fortran.txt"
   grep '^20 ' "$out/rust.txt" | diff - "$out/fortran.txt"
