@@ -16,7 +16,9 @@
 #      x86-64-v3 builds (printed, not asserted);
 #   5. bad input stops LAMMPS with a clear ERROR;
 #   6. a coarse step taken knowingly (keyword coarse): the run goes on, each style warns once;
-#      after read_restart it is asked for again.
+#      after read_restart it is asked for again;
+#   7. decks that start empty (fix pour of three Hertz materials onto a wall fix, 1 and 2 ranks),
+#      the step checked when the atoms arrive; atoms without radius and mass refused.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -795,6 +797,77 @@ if [ $again_status -eq 0 ] && printf '%s' "$again" | grep -q 'Loop time' \
   && [ $plain_status -ne 0 ] && printf '%s' "$plain" | grep -q '^ERROR.*accuracy limit.*add the keyword coarse'; then ok=0; fi
 result "coarse step after read_restart (asked again / not)" "$ok" \
   "exit $again_status / $plain_status: $(printf '%s\n' "$plain" | grep -m1 '^ERROR' | cut -c1-90 || true)"
+
+# 7. Decks that start empty: three materials (Hertz, per-type coefficients mixed by the plugin)
+# poured by fix pour onto a floor of fix wall/soft/sphere. Both styles make their tables and
+# check the step when the atoms arrive, not at the run start (which has none): the run ends with
+# every atom in the box and resting on the floor (the lowest centre between 0.9 and 1 radius of
+# the smallest spheres above it), on 1 and 2 ranks; a step too long for the arriving atoms stops
+# the run there, naming the types.
+pour_deck() { # timestep
+  cat <<POUR
+units si
+atom_style sphere
+boundary p p fm
+comm_modify vel yes
+region box block 0 0.02 0 0.02 0 0.04
+create_box 3 box
+plugin load \${plugin}
+pair_style soft/sphere impact 2.0
+pair_coeff 1 1 hertz/aa 5e6 0.3 0.9 0.5 0.5
+pair_coeff 2 2 hertz/aa 2e7 0.25 0.8 0.5 0.4
+pair_coeff 3 3 hertz/aa 1e6 0.4 0.6 0.5 0.6
+neighbor 0.0002 bin
+neigh_modify delay 0
+fix gravity all gravity 9.81 vector 0 0 -1
+fix integrate all nve/sphere
+fix floor all wall/soft/sphere hertz/aa 2e7 0.3 0.8 0.5 0.5 impact 2.0 zplane 0 NULL
+region slab block 0.001 0.019 0.001 0.019 0.025 0.038
+fix pour1 all pour 40 1 4767 region slab diam one 0.002 dens 2500 2500 vel 0 0 0 0 -0.5
+fix pour2 all pour 40 2 5783 region slab diam one 0.0016 dens 7800 7800 vel 0 0 0 0 -0.5
+fix pour3 all pour 40 3 6113 region slab diam one 0.0024 dens 1100 1100 vel 0 0 0 0 -0.5
+compute low all reduce min z
+compute high all reduce max z
+thermo_style custom step atoms c_low c_high
+thermo 10000
+timestep $1
+run 60000
+print "RESULT \$(atoms) \$(c_low) \$(c_high)"
+POUR
+}
+pour_deck 2e-6 > "$work/pour.in"
+for ranks in 1 2; do
+  output="$(cd "$work" && mpirun -np "$ranks" "$lmp" -in pour.in -var plugin "$plugin" -log none 2>&1)"
+  status=$?
+  row="$(printf '%s\n' "$output" | sed -n 's/^RESULT //p')"
+  ok=1
+  if [ $status -eq 0 ] && [ -n "$row" ] && python3 - "$row" <<'PY'; then ok=0; fi
+import sys
+atoms, low, high = map(float, sys.argv[1].split())
+# The 1.6 mm spheres rest on the floor: their centres 0.8 mm up, less a small overlap.
+sys.exit(0 if atoms >= 60 and 0.9 * 0.8e-3 < low < 0.8e-3 and high < 0.04 else 1)
+PY
+  result "a fix pour deck of three Hertz materials that starts empty, $ranks rank(s)" "$ok" \
+    "exit $status, atoms, lowest and highest centre: ${row:-none} $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+done
+pour_deck 2e-4 > "$work/pour_long.in"
+output="$(cd "$work" && "$lmp" -in pour_long.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+ok=1
+if [ $status -ne 0 ] && printf '%s' "$message" | grep -q 'soft/sphere: the time step 0.0002 s is at or past the kernel.s .* limit .* for types'; then ok=0; fi
+result "a step too long for the atoms fix pour brings stops the run when they arrive" "$ok" "${message:-no ERROR line (exit $status)}"
+# Atoms without radius and mass: an ERROR, not a crash.
+printf '%s\n' 'units si' 'atom_style atomic' 'region box block 0 0.01 0 0.01 0 0.01' \
+  'create_box 1 box' 'create_atoms 1 single 0.005 0.005 0.005' 'mass 1 1e-6' \
+  'plugin load ${plugin}' 'pair_style soft/sphere aa 1000 0.9 285.7 0.5 0.5' 'pair_coeff * *' \
+  'fix integrate all nve' 'timestep 1e-6' 'run 10' > "$work/atomic.in"
+output="$(cd "$work" && "$lmp" -in atomic.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+ok=1
+if [ $status -ne 0 ] && printf '%s' "$message" | grep -q 'soft/sphere requires the atom attributes radius, rmass'; then ok=0; fi
+result "bad input: atom_style atomic" "$ok" "${message:-no ERROR line (exit $status)}"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

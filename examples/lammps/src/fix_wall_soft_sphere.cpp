@@ -5,6 +5,7 @@
 #include "atom.h"
 #include "error.h"
 #include "memory.h"
+#include "neighbor.h"
 #include "soft_sphere_law.h"
 #include "update.h"
 #include "utils.h"
@@ -18,14 +19,15 @@ using namespace FixConst;
 
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
-    impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true)
+    impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true),
+    built_radius(0.0), built_inertia(0.0), checked_lightest(-1.0)
 {
   const std::string style = "fix wall/soft/sphere";
   if (narg < 12)
     error->all(FLERR,
                "Illegal fix wall/soft/sphere command: expected LAW and five numbers, "
                "[rolling mu_r k_r eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI");
-  if (!atom->sphere_flag) error->all(FLERR, "fix wall/soft/sphere requires atom style sphere");
+  SoftSphere::require_spheres(lmp, style);
   model = SoftSphere::model(lmp, style, arg[3]);
   coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
   int k = 9;
@@ -114,13 +116,14 @@ ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", style,
                SoftSphere::parameter_name(
-                   code == SS_ERR_NOT_POSITIVE ? SS_PARAMETER_SPEED : SS_PARAMETER_NONE, model),
+                   code == SS_ERR_NOT_POSITIVE ? SS_PARAMETER_SPEED : SS_PARAMETER_NONE, model,
+                   true),
                SoftSphere::parameter_error(code));
   int parameter = SS_PARAMETER_NONE;
   code = ss_table_set_f64(made, 0, 0, &coefficients, &parameter);
   if (code != SS_OK) {
     ss_table_free_f64(made);
-    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(parameter, model),
+    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(parameter, model, true),
                SoftSphere::parameter_error(code));
   }
   return made;
@@ -128,14 +131,35 @@ ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia
 
 void FixWallSoftSphere::init()
 {
+  refresh(true);
+}
+
+/* Makes the table for the atoms present (remade when asked, or when larger atoms or atoms of
+ * smaller inertia than it was made for have arrived) and checks the step at the lightest atom
+ * (again when a lighter one has arrived). A deck that starts empty (fix pour) gets a table for
+ * no atoms, which checks nothing, and the real one when its atoms arrive. Collective. */
+void FixWallSoftSphere::refresh(bool remake)
+{
   const std::string style = "fix wall/soft/sphere";
-  ss_table_free_f64(table);
-  table = nullptr;
-  table = new_table(SoftSphere::largest_radius(lmp),
-                    rolling > 0 ? SoftSphere::smallest_inertia(lmp) : 1.0);
+  const SoftSphere::Present now = SoftSphere::present(lmp, style, 1, nullptr, 0);
+  const bool inertia = rolling > 0;
+  if (remake || table == nullptr || now.largest_radius > built_radius ||
+      (inertia && now.smallest_inertia < built_inertia)) {
+    ss_table_free_f64(table);
+    table = nullptr;
+    // With no atoms yet any size will do: nothing is checked against it.
+    const double smallest = now.smallest_inertia > 0.0 ? now.smallest_inertia : 1.0;
+    table = new_table(now.largest_radius > 0.0 ? now.largest_radius : 1.0,
+                      inertia ? smallest : 1.0);
+    built_radius = now.largest_radius;
+    built_inertia = smallest;
+    checked_lightest = -1.0;
+  }
+  const double lightest = now.lightest[0];
+  if (lightest == checked_lightest) return;
+  checked_lightest = lightest;
   // A sphere against a wall has its own mass as effective mass; the table checks the step at
   // the pair of two of the lightest (half that), which bounds it.
-  const double lightest = SoftSphere::smallest_mass(lmp);
   ss_table_report_f64 report;
   const int code = coarse ? ss_table_prepare_coarse_f64(table, update->dt, &lightest, &report)
                           : ss_table_prepare_f64(table, update->dt, &lightest, &report);
@@ -151,7 +175,7 @@ void FixWallSoftSphere::init()
                "(add the keyword coarse to take such a step knowingly)",
                style, update->dt, report.limit);
   if (code != SS_OK)
-    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model),
+    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model, true),
                SoftSphere::parameter_error(code));
 }
 
@@ -165,6 +189,9 @@ void FixWallSoftSphere::setup(int)
 
 void FixWallSoftSphere::post_force(int)
 {
+  // Atoms arrive (fix pour, deposit) on the steps the lists are rebuilt: the table and the
+  // step are checked again for them there.
+  if (neighbor->ago == 0) refresh(false);
   forces();
 }
 

@@ -57,6 +57,10 @@ class FixWallSoftSphere : public Fix {
   double **history;      // per atom: the stored state against LO, then HI
   std::vector<int> material;    // zeros: every atom is of the table's one material
   bool advance;
+  double built_radius;    // the largest radius the table was made for (0: no atoms)
+  double built_inertia;   // the smallest inertia the table was made for
+  double checked_lightest;    // the mass the step was checked at (0: no atoms)
+  void refresh(bool remake);
 
   void forces();
   ss_table_f64 *new_table(double largest_radius, double inertia);

@@ -8,6 +8,7 @@
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "soft_sphere_law.h"
 #include "update.h"
 #include "utils.h"
@@ -23,7 +24,7 @@ static const char *STYLE = "pair_style soft/sphere";
 PairSoftSphere::PairSoftSphere(LAMMPS *lmp) :
     PairGranHookeHistory(lmp), model(-1), style_law(0), rolling(-1), impact_speed(0.0),
     coarse(0), warned_inaccurate(0), history_made(0),
-    table(nullptr)
+    table(nullptr), built_radius(0.0), built_inertia(0.0)
 {
   std::memset(&style_coefficients, 0, sizeof(style_coefficients));
   single_enable = 1;
@@ -180,23 +181,10 @@ void PairSoftSphere::coeff(int narg, char **arg)
 
 void PairSoftSphere::init_style()
 {
+  SoftSphere::require_spheres(lmp, STYLE);
   if (model < 0) error->all(FLERR, "{}: no law given (pair_coeff)", STYLE);
   size_tables();
-  ss_table_free_f64(table);
-  table = nullptr;
-  // The largest pair of spheres has R* = R / 2.
-  table = new_table(atom->ntypes, 0.5 * SoftSphere::largest_radius(lmp),
-                    rolling > 0 ? SoftSphere::smallest_inertia(lmp) : 1.0);
-  const int n = atom->ntypes + 1;
-  for (int i = 1; i < n; i++)
-    for (int j = i; j < n; j++) {
-      if (!given[i * n + j]) continue;
-      int parameter = SS_PARAMETER_NONE;
-      const int code = ss_table_set_f64(table, i - 1, j - 1, &coefficients[i * n + j], &parameter);
-      if (code != SS_OK)
-        error->all(FLERR, "pair_coeff {} {}: {} {}", i, j,
-                   SoftSphere::parameter_name(parameter, model), SoftSphere::parameter_error(code));
-    }
+  refresh(true);
   const size_t values = ss_table_state_values_f64(table);
   size_history = values > 0 ? (int) values : 1;
   if (history_made && history_made != size_history)
@@ -206,27 +194,54 @@ void PairSoftSphere::init_style()
                STYLE, SoftSphere::law_name(model), size_history, history_made);
   PairGranHookeHistory::init_style();
   history_made = size_history;
-  prepare();
 }
 
 void PairSoftSphere::reset_dt()
 {
   PairGranHookeHistory::reset_dt();
-  if (table) prepare();
+  if (table) prepare(checked_lightest);
 }
 
-void PairSoftSphere::prepare()
+/* Makes the table for the atoms present (remade when asked, or when atoms larger or of
+ * smaller inertia than it was made for have arrived) and checks the step at the lightest atom
+ * of each type present (again when a lighter atom or a new type has arrived). A deck that
+ * starts empty (fix pour) gets a table for no atoms, which checks nothing, and the real one
+ * when its atoms arrive. Collective. */
+void PairSoftSphere::refresh(bool remake)
+{
+  const SoftSphere::Present now = SoftSphere::present(lmp, STYLE, atom->ntypes, atom->type, 1);
+  const bool inertia = rolling > 0;
+  if (remake || table == nullptr || now.largest_radius > built_radius ||
+      (inertia && now.smallest_inertia < built_inertia)) {
+    ss_table_free_f64(table);
+    table = nullptr;
+    // The largest pair of spheres has R* = R / 2; with no atoms yet any size will do.
+    const double radius = now.largest_radius > 0.0 ? now.largest_radius : 1.0;
+    const double smallest = now.smallest_inertia > 0.0 ? now.smallest_inertia : 1.0;
+    table = new_table(atom->ntypes, 0.5 * radius, inertia ? smallest : 1.0);
+    built_radius = now.largest_radius;
+    built_inertia = smallest;
+    const int n = atom->ntypes + 1;
+    for (int i = 1; i < n; i++)
+      for (int j = i; j < n; j++) {
+        if (!given[i * n + j]) continue;
+        int parameter = SS_PARAMETER_NONE;
+        const int code =
+            ss_table_set_f64(table, i - 1, j - 1, &coefficients[i * n + j], &parameter);
+        if (code != SS_OK)
+          error->all(FLERR, "pair_coeff {} {}: {} {}", i, j,
+                     SoftSphere::parameter_name(parameter, model),
+                     SoftSphere::parameter_error(code));
+      }
+    checked_lightest.clear();
+  }
+  if (now.lightest != checked_lightest) prepare(now.lightest);
+}
+
+void PairSoftSphere::prepare(const std::vector<double> &lightest)
 {
   // The lightest atom of each type over all ranks (0 for a type with no atoms).
-  const int types = atom->ntypes;
-  std::vector<double> local(types, 1e300), lightest(types, 0.0);
-  for (int i = 0; i < atom->nlocal; i++) {
-    const int t = atom->type[i] - 1;
-    if (atom->rmass[i] < local[t]) local[t] = atom->rmass[i];
-  }
-  MPI_Allreduce(local.data(), lightest.data(), types, MPI_DOUBLE, MPI_MIN, world);
-  for (double &m : lightest)
-    if (m == 1e300) m = 0.0;
+  checked_lightest = lightest;
   ss_table_report_f64 report;
   const int code = coarse ? ss_table_prepare_coarse_f64(table, update->dt, lightest.data(), &report)
                           : ss_table_prepare_f64(table, update->dt, lightest.data(), &report);
@@ -260,6 +275,9 @@ void PairSoftSphere::prepare()
 void PairSoftSphere::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  // Atoms arrive (fix pour, deposit) on the steps the lists are rebuilt: the table and the
+  // step are checked again for them there.
+  if (neighbor->ago == 0 && !update->setupflag) refresh(false);
   // The setup evaluation (before the first step) gives forces without advancing the history.
   const int advance = update->setupflag ? 0 : 1;
 

@@ -55,11 +55,15 @@ class PairSoftSphere : public PairGranHookeHistory {
   std::vector<int> given;                           // whether a type pair was given its own
   int history_made;                    // the history size the history fix was made with
   ss_table_f64 *table;
+  double built_radius;                 // the largest radius the table was made for (0: no atoms)
+  double built_inertia;                // the smallest inertia the table was made for
+  std::vector<double> checked_lightest;    // per type, the masses the step was checked at
   std::vector<double> pair_force;      // per neighbour, for the virial
 
   void size_tables();
   ss_table_f64 *new_table(int materials, double largest_effective_radius, double inertia);
-  void prepare();
+  void refresh(bool remake);
+  void prepare(const std::vector<double> &lightest);
 };
 
 }    // namespace LAMMPS_NS

@@ -7,6 +7,8 @@
 #include "fmt/format.h"
 #include "utils.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <mpi.h>
 
@@ -60,19 +62,6 @@ void SoftSphere::rolling(LAMMPS *lmp, ss_coefficients_f64 &c, char **arg)
   c.rolling_damping = utils::numeric(FLERR, arg[2], false, lmp);
 }
 
-double SoftSphere::smallest_inertia(LAMMPS *lmp)
-{
-  double smallest = 1e300;
-  const double *rmass = lmp->atom->rmass, *radius = lmp->atom->radius;
-  for (int i = 0; i < lmp->atom->nlocal; i++) {
-    const double inertia = 0.4 * rmass[i] * radius[i] * radius[i];
-    if (inertia < smallest) smallest = inertia;
-  }
-  double all = smallest;
-  MPI_Allreduce(&smallest, &all, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
-  return 0.5 * all;
-}
-
 ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f64 &c)
 {
   ss_params_f64 p;
@@ -99,10 +88,12 @@ ss_params_f64 SoftSphere::params(LAMMPS *lmp, int model, const ss_coefficients_f
   return p;
 }
 
-const char *SoftSphere::parameter_name(int parameter, int model)
+const char *SoftSphere::parameter_name(int parameter, int model, bool wall)
 {
   // The kernel's words, with where a LAMMPS user sets the two the input script does not name.
-  if (parameter == SS_PARAMETER_SPEED) return "the impact speed (pair_style soft/sphere impact V)";
+  if (parameter == SS_PARAMETER_SPEED)
+    return wall ? "the impact speed (impact V after the law's numbers)"
+                : "the impact speed (pair_style soft/sphere impact V)";
   if (parameter == SS_PARAMETER_MASS) return "the smallest atom mass";
   return ss_parameter_name(parameter, model);
 }
@@ -142,26 +133,48 @@ ss_bound_law_f64 *SoftSphere::bind(LAMMPS *lmp, const std::string &style, const 
   return bound;
 }
 
-double SoftSphere::smallest_mass(LAMMPS *lmp)
+SoftSphere::Present SoftSphere::present(LAMMPS *lmp, const std::string &style, int types,
+                                        const int *kind, int first)
 {
-  double smallest = 1e300;
-  const double *rmass = lmp->atom->rmass;
-  for (int i = 0; i < lmp->atom->nlocal; i++)
-    if (rmass[i] < smallest) smallest = rmass[i];
-  double all = smallest;
-  MPI_Allreduce(&smallest, &all, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
-  return all;
+  const Atom *atom = lmp->atom;
+  // One reduction: the largest radius, then the negated smallest inertia, then each kind's
+  // negated lightest mass (a maximum of negatives is a minimum), then the count of bad atoms.
+  std::vector<double> local(types + 3, -HUGE_VAL), all(types + 3, 0.0);
+  local[types + 2] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double r = atom->radius[i], m = atom->rmass[i];
+    if (!(r > 0.0) || !(m > 0.0) || !std::isfinite(r) || !std::isfinite(m)) {
+      local[types + 2] += 1.0;
+      continue;
+    }
+    const int k = kind ? kind[i] - first : 0;
+    local[0] = std::max(local[0], r);
+    local[1] = std::max(local[1], -0.2 * m * r * r);
+    if (k >= 0 && k < types) local[2 + k] = std::max(local[2 + k], -m);
+  }
+  MPI_Allreduce(local.data(), all.data(), types + 3, MPI_DOUBLE, MPI_MAX, lmp->world);
+  if (all[types + 2] > 0.0)
+    lmp->error->all(FLERR,
+                    "{}: an atom's radius or mass is not a positive number (a contact law "
+                    "needs spheres of finite size and mass)",
+                    style);
+  Present p;
+  p.largest_radius = all[0] > 0.0 ? all[0] : 0.0;
+  // Half the smallest 2/5 m R^2: two of the smallest in contact.
+  p.smallest_inertia = all[1] < 0.0 && std::isfinite(all[1]) ? -all[1] : 0.0;
+  p.lightest.resize(types);
+  for (int k = 0; k < types; k++) p.lightest[k] = std::isfinite(all[2 + k]) ? -all[2 + k] : 0.0;
+  return p;
 }
 
-double SoftSphere::largest_radius(LAMMPS *lmp)
+void SoftSphere::require_spheres(LAMMPS *lmp, const std::string &style)
 {
-  double largest = 0.0;
-  const double *radius = lmp->atom->radius;
-  for (int i = 0; i < lmp->atom->nlocal; i++)
-    if (radius[i] > largest) largest = radius[i];
-  double all = largest;
-  MPI_Allreduce(&largest, &all, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
-  return all;
+  const Atom *atom = lmp->atom;
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    lmp->error->all(FLERR,
+                    "{} requires the atom attributes radius, rmass, omega and torque (atom_style "
+                    "sphere)",
+                    style);
 }
 
 const char *SoftSphere::contact_error(int code)

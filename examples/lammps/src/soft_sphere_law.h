@@ -11,6 +11,7 @@
 #include "soft_sphere.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 class LAMMPS;
@@ -32,10 +33,6 @@ namespace SoftSphere {
   /* The rolling resistance's three numbers (arg[0] .. arg[2]: mu_r k_r eta_r) into `c`. */
   void rolling(LAMMPS *lmp, ss_coefficients_f64 &c, char **arg);
 
-  /* The smallest effective moment of inertia of a pair of atoms over all ranks: half the
-   * smallest 2/5 m R^2. */
-  double smallest_inertia(LAMMPS *lmp);
-
   /* The one-law parameters of `model` with coefficients `c` for a contact between two bodies
    * of that material (Hertz: E* and G* of the material with itself); the time step, masses and
    * declared impact are filled in by build(). */
@@ -50,14 +47,26 @@ namespace SoftSphere {
    * ss_bound_law_free_f64 before the law. */
   ss_bound_law_f64 *bind(LAMMPS *lmp, const std::string &style, const ss_law_f64 *law);
 
-  /* The smallest per-atom mass over all ranks (atom style sphere). */
-  double smallest_mass(LAMMPS *lmp);
+  /* What the atoms present on all ranks ask of a law table: the largest radius (0 when there
+   * are no atoms), the smallest effective moment of inertia of a pair (half the
+   * smallest 2/5 m R^2; 0 when there are no atoms) and the lightest atom of each of `types` kinds (0 for a kind
+   * with no atoms; atom i's is `kind[i] - first`, or 0 with no `kind`). ERROR (on all ranks) when an atom's
+   * radius or mass is not positive. Collective: every rank calls it at the same point. */
+  struct Present {
+    double largest_radius;
+    double smallest_inertia;
+    std::vector<double> lightest;
+  };
+  Present present(LAMMPS *lmp, const std::string &style, int types, const int *kind,
+                  int first);
 
-  /* The largest radius over all ranks. */
-  double largest_radius(LAMMPS *lmp);
+  /* ERROR unless the atom style carries what a contact law reads (radius, rmass, omega,
+   * torque: atom_style sphere). */
+  void require_spheres(LAMMPS *lmp, const std::string &style);
 
-  /* What a parameter code names, for a law of `model`. */
-  const char *parameter_name(int parameter, int model);
+  /* What a parameter code names, for a law of `model` in the pair style (or the wall fix,
+   * `wall`). */
+  const char *parameter_name(int parameter, int model, bool wall = false);
 
   /* What a parameter error code means. */
   const char *parameter_error(int code);
