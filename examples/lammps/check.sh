@@ -18,7 +18,9 @@
 #   6. a coarse step taken knowingly (keyword coarse): the run goes on, each style warns once;
 #      after read_restart it is asked for again;
 #   7. decks that start empty (fix pour of three Hertz materials onto a wall fix, 1 and 2 ranks),
-#      the step checked when the atoms arrive; atoms without radius and mass refused.
+#      the step checked when the atoms arrive; atoms without radius and mass refused; walls of
+#      their own material, each atom type meeting the wall as it meets a large sphere of the
+#      wall's material.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -801,7 +803,7 @@ result "coarse step after read_restart (asked again / not)" "$ok" \
 # 7. Decks that start empty: three materials (Hertz, per-type coefficients mixed by the plugin)
 # poured by fix pour onto a floor of fix wall/soft/sphere. Both styles make their tables and
 # check the step when the atoms arrive, not at the run start (which has none): the run ends with
-# every atom in the box and resting on the floor (the lowest centre between 0.9 and 1 radius of
+# all 120 atoms poured, resting on the floor (the lowest centre between 0.9 and 1 radius of
 # the smallest spheres above it), on 1 and 2 ranks; a step too long for the arriving atoms stops
 # the run there, naming the types.
 pour_deck() { # timestep
@@ -845,7 +847,7 @@ for ranks in 1 2; do
 import sys
 atoms, low, high = map(float, sys.argv[1].split())
 # The 1.6 mm spheres rest on the floor: their centres 0.8 mm up, less a small overlap.
-sys.exit(0 if atoms >= 60 and 0.9 * 0.8e-3 < low < 0.8e-3 and high < 0.04 else 1)
+sys.exit(0 if atoms == 120 and 0.9 * 0.8e-3 < low < 0.8e-3 else 1)
 PY
   result "a fix pour deck of three Hertz materials that starts empty, $ranks rank(s)" "$ok" \
     "exit $status, atoms, lowest and highest centre: ${row:-none} $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
@@ -868,6 +870,82 @@ message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 ok=1
 if [ $status -ne 0 ] && printf '%s' "$message" | grep -q 'soft/sphere requires the atom attributes radius, rmass'; then ok=0; fi
 result "bad input: atom_style atomic" "$ok" "${message:-no ERROR line (exit $status)}"
+
+# Walls of their own material: under pair_style soft/sphere each atom type meets the wall by
+# the mixing rule, as it meets a sphere of the wall's coefficients. A 2 mm sphere of type 1 or 2
+# (E 1e7 and 2e8 Pa) falls at 0.5 m/s onto one Hertz wall fix of E 2e9 Pa (type 3's
+# coefficients), and onto a fixed sphere of type 3 and radius 1 m instead: the deepest overlap
+# (R* differs by 0.1 %, the overlap as R*^(-1/5): 0.02 %) and the rebound (e mixed) agree.
+wall_deck() { # type, wall|sphere
+  cat <<DECK
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block -0.01 0.01 -0.01 0.01 -1.01 0.01
+create_box 3 box
+create_atoms $1 single 0 0 0.00101
+set type $1 diameter 0.002 density 2500
+$([ "$2" = sphere ] && printf '%s\n' "create_atoms 3 single 0 0 -1" "set type 3 diameter 2 density 7800")
+group mobile type 1 2
+velocity mobile set 0 0 -0.5
+plugin load \${plugin}
+pair_style soft/sphere impact 1
+pair_coeff 1 1 hertz/aa 1e7 0.3 0.8 0.5 0.5
+pair_coeff 2 2 hertz/aa 2e8 0.25 0.9 0.5 0.4
+pair_coeff 3 3 hertz/aa 2e9 0.3 0.6 0.5 0.5
+neighbor 0.0001 bin
+fix integrate mobile nve/sphere
+$([ "$2" = wall ] && echo "fix floor mobile wall/soft/sphere hertz/aa 2e9 0.3 0.6 0.5 0.5 impact 1 zplane 0 NULL")
+timestep 2e-8
+variable z equal z[1]
+variable vz equal vz[1]
+thermo_style custom step v_z v_vz
+thermo_modify format float %.17g
+thermo 10
+run 20000
+DECK
+}
+# The deepest overlap (radius less the lowest centre) and the last vertical speed of a run.
+bounce() { # type, wall|sphere
+  wall_deck "$1" "$2" > "$work/wall_$1_$2.in"
+  (cd "$work" && "$lmp" -in "wall_$1_$2.in" -var plugin "$plugin" -log none 2>&1) \
+    | awk '/^ *Step/{f=1;next} /^Loop/{f=0} f' | python3 -c "
+import sys
+rows = [list(map(float, l.split())) for l in sys.stdin if l.strip()]
+print(f'{1e-3 - min(r[1] for r in rows):.10e} {rows[-1][2]:.10e}' if rows else 'none')"
+}
+for type in 1 2; do
+  on_wall="$(bounce $type wall)"
+  on_sphere="$(bounce $type sphere)"
+  ok=1
+  if python3 - "$on_wall" "$on_sphere" <<'PY'; then ok=0; fi
+import sys
+try:
+    (d1, v1), (d2, v2) = (map(float, a.split()) for a in sys.argv[1:])
+except ValueError:
+    sys.exit(1)
+sys.exit(0 if abs(d1 - d2) <= 1e-3 * d2 and abs(v1 - v2) <= 1e-4 * abs(v2) and v1 > 0 else 1)
+PY
+  result "a wall of its own material meets atom type $type as a sphere of that material does" "$ok" \
+    "deepest overlap and rebound: wall $on_wall, sphere $on_sphere (bounds 1e-3 and 1e-4)"
+done
+# A wall of another law than the pair style's has nothing to mix with: every atom meets it with
+# the wall's law (as in the Kharaz cases above: a frictionless pair style, an aa wall), said in
+# the log. Head-on, hertz/aa/luding is hertz/aa: the type 1 sphere leaves at the wall's own e
+# (0.6) times 0.5 m/s, not the mixed sqrt(0.8 0.6) (the kernel's Hertz dashpot holds e within
+# 0.16 %).
+wall_deck 1 wall | sed 's|wall/soft/sphere hertz/aa 2e9|wall/soft/sphere hertz/aa/luding 2e9|' \
+  > "$work/wall_law.in"
+output="$(cd "$work" && "$lmp" -in wall_law.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+speed="$(printf '%s\n' "$output" | awk '/^ *Step/{f=1;next} /^Loop/{f=0} f' | tail -1 | awk '{print $3}')"
+ok=1
+if [ $status -eq 0 ] && printf '%s' "$output" | grep -q "every atom meets the wall with the wall's law" \
+  && [ -n "$speed" ] && compare "$speed" 0.3 1.6e-3; then ok=0; fi
+result "a wall of another law than the pair style's meets every atom with its own law" "$ok" \
+  "exit $status, rebound ${speed:-none} m/s for 0.6 x 0.5: $(printf '%s\n' "$output" | grep -m1 'meets the wall' || true)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

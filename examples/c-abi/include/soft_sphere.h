@@ -1837,6 +1837,20 @@ int32_t ss_table_prepare_f64(ss_table_f64 *table,
                              ss_table_report_f64 *report);
 
 /**
+ * The materials the walls a host evaluates (`ss_table_evaluate_walls_*`) are made of,
+ * `count` ids (replacing any given before; none by default): each prepare then also
+ * checks the step against the law of every material present with each of them, at
+ * the mass of the material's lightest atom (a sphere against a wall). Returns `SS_OK`,
+ * `SS_ERR_NULL`, or `SS_ERR_MATERIAL` for an id past the table (nothing changed).
+ * The table does not evaluate until prepared again.
+ *
+ * # Safety
+ * `materials` must hold `count` ids (it may be null when `count` is 0); `table` be
+ * valid or null.
+ */
+int32_t ss_table_set_walls_f64(ss_table_f64 *table, const uint32_t *materials, size_t count);
+
+/**
  * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
  * within every pair's stability limit is accepted (`SS_ERR_UNSTABLE_TIME_STEP` past
  * it), and each evaluation counts its contacts past their law's accuracy limit in
@@ -2144,6 +2158,20 @@ int32_t ss_table_prepare_f32(ss_table_f32 *table,
                              float time_step,
                              const float *lightest_mass,
                              ss_table_report_f32 *report);
+
+/**
+ * The materials the walls a host evaluates (`ss_table_evaluate_walls_*`) are made of,
+ * `count` ids (replacing any given before; none by default): each prepare then also
+ * checks the step against the law of every material present with each of them, at
+ * the mass of the material's lightest atom (a sphere against a wall). Returns `SS_OK`,
+ * `SS_ERR_NULL`, or `SS_ERR_MATERIAL` for an id past the table (nothing changed).
+ * The table does not evaluate until prepared again.
+ *
+ * # Safety
+ * `materials` must hold `count` ids (it may be null when `count` is 0); `table` be
+ * valid or null.
+ */
+int32_t ss_table_set_walls_f32(ss_table_f32 *table, const uint32_t *materials, size_t count);
 
 /**
  * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step

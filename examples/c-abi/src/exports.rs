@@ -5,7 +5,7 @@
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_prepare_coarse:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_prepare_coarse:ident, $table_set_walls:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -274,6 +274,26 @@ macro_rules! entry_points {
         ) -> i32 {
             // SAFETY: forwarded contract.
             unsafe { table::table_prepare(table, (time_step, false), lightest_mass, report) }
+        }
+
+        /// The materials the walls a host evaluates (`ss_table_evaluate_walls_*`) are made of,
+        /// `count` ids (replacing any given before; none by default): each prepare then also
+        /// checks the step against the law of every material present with each of them, at
+        /// the mass of the material's lightest atom (a sphere against a wall). Returns `SS_OK`,
+        /// `SS_ERR_NULL`, or `SS_ERR_MATERIAL` for an id past the table (nothing changed).
+        /// The table does not evaluate until prepared again.
+        ///
+        /// # Safety
+        /// `materials` must hold `count` ids (it may be null when `count` is 0); `table` be
+        /// valid or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_set_walls(
+            table: *mut table::ss_table<$real>,
+            materials: *const u32,
+            count: usize,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_set_walls(table, materials, count) }
         }
 
         /// As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step

@@ -9,9 +9,9 @@
 
 use soft_sphere::{
     ContactLaw, ElasticMaterial, ElasticPlasticRolling, Float, HertzImpact, HertzMicroSlip,
-    HertzMixing, Interaction, Law, LinearMaterial, ListError, Material, MaterialTable, MathBackend,
-    MicroSlip, MindlinAA, MindlinParameters, Mixing, NormalModel, ParameterError, Rotation,
-    SphereArrays, TangentialModel, TimeStep, Vec3,
+    HertzMixing, Interaction, Law, LinearMaterial, ListError, Material, MaterialTable,
+    MaterialWall, MathBackend, MicroSlip, MindlinAA, MindlinParameters, Mixing, NormalModel,
+    ParameterError, Rotation, SphereArrays, TangentialModel, TimeStep, Vec3, Wall,
 };
 
 use crate::registry::{PlainTable, RolledTable, hertz_model};
@@ -244,6 +244,9 @@ pub(crate) struct Tabled<F: Float, X: Mixing<F>> {
     /// themselves.
     pub(crate) given: [[Option<X::Properties>; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
     pub(crate) ready: Option<(MaterialTable<X::Law, SS_MATERIALS_MAX>, TimeStep<F>)>,
+    /// The materials walls are made of: the step is checked against each of them with every
+    /// material present, at its lightest atom's mass.
+    pub(crate) walls: Vec<u32>,
     pub(crate) work: Workspace<F, <X::Law as Law>::State>,
     pub(crate) wall_work: WallWork<F, <X::Law as Law>::State>,
 }
@@ -273,7 +276,7 @@ pub(crate) struct WallWork<F, S> {
     pub(crate) radius: Vec<F>,
     pub(crate) mass: Vec<F>,
     pub(crate) material: Vec<u32>,
-    pub(crate) walls: Vec<soft_sphere::MaterialWall<F>>,
+    pub(crate) walls: Vec<MaterialWall<F>>,
     pub(crate) states: Vec<S>,
     pub(crate) saved: Vec<S>,
     pub(crate) loads: Vec<Vec3<F>>,
@@ -466,6 +469,7 @@ where
             own: [None; SS_MATERIALS_MAX],
             given: [[None; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
             ready: None,
+            walls: Vec::new(),
             work: Workspace {
                 material: Vec::new(),
                 pairs: Vec::new(),
@@ -507,6 +511,16 @@ where
             (None, Some(p), Some(q)) => self.mixing.law(&p, &q).map_err(refused),
             _ => Err((SS_ERR_MATERIAL, SS_PARAMETER_NONE)),
         }
+    }
+
+    /// The materials walls are made of: every id a material of the table, or nothing changes.
+    fn set_walls(&mut self, walls: &[u32]) -> i32 {
+        if walls.iter().any(|&m| m as usize >= self.materials) {
+            return SS_ERR_MATERIAL;
+        }
+        self.walls = walls.to_vec();
+        self.ready = None;
+        SS_OK
     }
 
     /// Builds every law and checks `dt` against each pair of materials present (the lightest
@@ -565,10 +579,20 @@ where
             mass: &mass,
             material: &material,
         };
+        // Only a wall's material enters the step's check; where the wall lies does not.
+        let Ok(plane) = Wall::new(Vec3::ZERO, Vec3::new(F::ZERO, F::ZERO, F::ONE)) else {
+            return SS_ERR_MATERIAL;
+        };
+        let walls: Vec<MaterialWall<F>> = (self.walls.iter())
+            .map(|&material| MaterialWall {
+                wall: plane,
+                material,
+            })
+            .collect();
         let step = if coarse {
-            table.coarse_time_step(dt, &spheres, &[])
+            table.coarse_time_step(dt, &spheres, &walls)
         } else {
-            table.time_step(dt, &spheres, &[])
+            table.time_step(dt, &spheres, &walls)
         };
         let step = match step {
             Ok(step) => step,
@@ -694,6 +718,29 @@ pub(crate) unsafe fn table_set<F: Float>(
         *parameter = rejected;
     }
     code
+}
+
+/// # Safety
+/// As the exported wall-material setters.
+pub(crate) unsafe fn table_set_walls<F: Float>(
+    table: *mut ss_table<F>,
+    materials: *const u32,
+    count: usize,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(table) = (unsafe { table.as_mut() }) else {
+        return SS_ERR_NULL;
+    };
+    if count > 0 && materials.is_null() {
+        return SS_ERR_NULL;
+    }
+    let given = if count == 0 {
+        &[][..]
+    } else {
+        // SAFETY: `count` ids (the caller's promise), checked non-null.
+        unsafe { std::slice::from_raw_parts(materials, count) }
+    };
+    each_table!(&mut table.table, t => t.set_walls(given))
 }
 
 /// # Safety

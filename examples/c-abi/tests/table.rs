@@ -822,6 +822,84 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
 }
 
 #[test]
+fn the_step_is_checked_against_the_walls_materials() {
+    let table = table(SS_MODEL_AA);
+    // Material 1 made 100 times stiffer than material 0: against material 0's spheres a wall
+    // of it has the mixed k = sqrt(1e4 1e6) = 1e5 at the sphere's own mass m, a pair of
+    // material 0's spheres 1e4 at m / 2. Undamped, the limits are 2 sqrt(m* / k), the wall's
+    // sqrt(5) times the shorter; damping only lowers them.
+    let stiff = ss_coefficients {
+        normal_stiffness: 1.0e6,
+        ..material(1)
+    };
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_f64(table, 1, 1, &stiff, null_mut()) },
+        SS_OK
+    );
+    let m = 1.0e-9;
+    let wall_undamped = 2.0 * (m / 1.0e5_f64).sqrt();
+    let dt = 1.5 * wall_undamped;
+    let lightest = [m, 0.0, 0.0];
+    let prepare = |report: &mut ss_table_report<f64>| {
+        // SAFETY: valid pointers.
+        unsafe { ss_table_prepare_coarse_f64(table, dt, lightest.as_ptr(), report) }
+    };
+    let mut report = ss_table_report::<f64>::default();
+    // No walls: only the pair of material 0 is checked, and that step is stable for it.
+    assert_eq!(prepare(&mut report), SS_OK);
+    // A wall of material 1: refused at the wall's limit, naming material 0 with the wall's.
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_walls_f64(table, [1].as_ptr(), 1) },
+        SS_OK
+    );
+    let mut host = Host::new(1, 3);
+    let before = host.clone();
+    assert_eq!(
+        host.evaluate(table, 1, 1, |_, _, _| {}).0,
+        SS_ERR_NOT_PREPARED,
+        "a table is prepared again after its walls change"
+    );
+    assert_eq!(host, before);
+    assert_eq!(prepare(&mut report), SS_ERR_UNSTABLE_TIME_STEP);
+    assert_eq!(report.materials, [0, 1]);
+    assert!(report.limit < wall_undamped && report.limit > 0.5 * wall_undamped);
+    // Bad input changes nothing: an id past the table, a null table or null ids.
+    // SAFETY: valid pointers, or null where the test says.
+    unsafe {
+        assert_eq!(
+            ss_table_set_walls_f64(table, [0, 3].as_ptr(), 2),
+            SS_ERR_MATERIAL
+        );
+        assert_eq!(
+            ss_table_set_walls_f64(null_mut(), [0].as_ptr(), 1),
+            SS_ERR_NULL
+        );
+        assert_eq!(ss_table_set_walls_f64(table, null(), 1), SS_ERR_NULL);
+    }
+    assert_eq!(
+        prepare(&mut report),
+        SS_ERR_UNSTABLE_TIME_STEP,
+        "the walls given before are kept"
+    );
+    assert_eq!(report.materials, [0, 1]);
+    // A wall of material 0's own: its k is 1e4 at m, as stable as the pair.
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_walls_f64(table, [0].as_ptr(), 1) },
+        SS_OK
+    );
+    assert_eq!(prepare(&mut report), SS_OK);
+    // None again (null with no ids is allowed).
+    // SAFETY: valid pointers.
+    assert_eq!(unsafe { ss_table_set_walls_f64(table, null(), 0) }, SS_OK);
+    assert_eq!(prepare(&mut report), SS_OK);
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
+#[test]
 fn tables_refuse_bad_coefficients_and_missing_materials() {
     let config = ss_table_config {
         model: SS_MODEL_HERTZ_AA,

@@ -3,7 +3,11 @@
 #include "fix_wall_soft_sphere.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
+#include "force.h"
+#include "fmt/format.h"
+#include "pair_soft_sphere.h"
 #include "memory.h"
 #include "neighbor.h"
 #include "soft_sphere_law.h"
@@ -20,7 +24,7 @@ using namespace FixConst;
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
     impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true),
-    built_radius(0.0), built_inertia(0.0), checked_lightest(-1.0)
+    built_radius(0.0), built_inertia(0.0), types(1), mixed(0)
 {
   const std::string style = "fix wall/soft/sphere";
   if (narg < 12)
@@ -95,20 +99,24 @@ int FixWallSoftSphere::setmask()
   return POST_FORCE;
 }
 
-/* A one-material table (spheres and walls alike) with this fix's law, its coefficients checked
- * (ERROR naming the rejected one). */
+/* A table of the spheres' materials (the atom types with the pair style's coefficients, or one
+ * of the wall's own) and the wall's, last, with this fix's law, its coefficients checked (ERROR
+ * naming the rejected one). */
 ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia)
 {
   const std::string style = "fix wall/soft/sphere";
   ss_table_config_f64 config = {};
   std::memset(&config, 0, sizeof(config));
   config.model = model;
-  config.materials = 1;
+  config.materials = (size_t) types + 1;
   config.rolling = rolling;
   config.smallest_inertia = inertia;
   config.largest_impact_speed = impact_speed;
   // A sphere against a wall has its own radius as R*.
   config.largest_effective_radius = largest_radius;
+  if (types + 1 > SS_MATERIALS_MAX)
+    error->all(FLERR, "{}: at most {} atom types meet a wall of its own material", style,
+               SS_MATERIALS_MAX - 1);
   ss_table_f64 *made = nullptr;
   int code = ss_table_new_f64(&config, &made);
   if (code == SS_ERR_UNKNOWN_MODEL)
@@ -119,18 +127,49 @@ ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia
                    code == SS_ERR_NOT_POSITIVE ? SS_PARAMETER_SPEED : SS_PARAMETER_NONE, model,
                    true),
                SoftSphere::parameter_error(code));
-  int parameter = SS_PARAMETER_NONE;
-  code = ss_table_set_f64(made, 0, 0, &coefficients, &parameter);
-  if (code != SS_OK) {
+  const auto *pair = mixed ? dynamic_cast<PairSoftSphere *>(force->pair_match("soft/sphere", 1))
+                           : nullptr;
+  for (int m = 0; m <= types; m++) {
+    const ss_coefficients_f64 *c = m < types && pair ? pair->own(m + 1) : &coefficients;
+    if (c == nullptr) {
+      ss_table_free_f64(made);
+      error->all(FLERR,
+                 "{}: atom type {} has no coefficients of its own to meet the wall by (pair_coeff "
+                 "{} {} LAW ...)",
+                 style, m + 1, m + 1, m + 1);
+    }
+    int parameter = SS_PARAMETER_NONE;
+    code = ss_table_set_f64(made, m, m, c, &parameter);
+    if (code != SS_OK) {
+      ss_table_free_f64(made);
+      error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(parameter, model, true),
+                 SoftSphere::parameter_error(code));
+    }
+  }
+  const uint32_t wall = (uint32_t) types;
+  if (ss_table_set_walls_f64(made, &wall, 1) != SS_OK) {
     ss_table_free_f64(made);
-    error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(parameter, model, true),
-               SoftSphere::parameter_error(code));
+    error->all(FLERR, "{}: the kernel refused the wall's material", style);
   }
   return made;
 }
 
 void FixWallSoftSphere::init()
 {
+  const std::string style = "fix wall/soft/sphere";
+  // Under pair_style soft/sphere with the wall's law (and rolling resistance alike), each atom
+  // type meets the wall by mixing; with another law there is nothing to mix with, and every
+  // atom meets the wall with the wall's law.
+  const auto *pair = dynamic_cast<PairSoftSphere *>(force->pair_match("soft/sphere", 1));
+  mixed = pair != nullptr && pair->law() == model && (pair->law_rolling() > 0) == (rolling > 0);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   mixed ? "{}: each atom type meets the wall by mixing its pair_style "
+                           "soft/sphere coefficients with the wall's\n"
+                         : "{}: every atom meets the wall with the wall's law (no pair_style "
+                           "soft/sphere of the same law to mix with)\n",
+                   style);
+  types = mixed ? atom->ntypes : 1;
   refresh(true);
 }
 
@@ -141,7 +180,8 @@ void FixWallSoftSphere::init()
 void FixWallSoftSphere::refresh(bool remake)
 {
   const std::string style = "fix wall/soft/sphere";
-  const SoftSphere::Present now = SoftSphere::present(lmp, style, 1, nullptr, 0);
+  const SoftSphere::Present now =
+      SoftSphere::present(lmp, style, types, mixed ? atom->type : nullptr, 1);
   const bool inertia = rolling > 0;
   if (remake || table == nullptr || now.largest_radius > built_radius ||
       (inertia && now.smallest_inertia < built_inertia)) {
@@ -153,27 +193,35 @@ void FixWallSoftSphere::refresh(bool remake)
                       inertia ? smallest : 1.0);
     built_radius = now.largest_radius;
     built_inertia = smallest;
-    checked_lightest = -1.0;
+    checked_lightest.clear();
   }
-  const double lightest = now.lightest[0];
-  if (lightest == checked_lightest) return;
-  checked_lightest = lightest;
-  // A sphere against a wall has its own mass as effective mass; the table checks the step at
-  // the pair of two of the lightest (half that), which bounds it.
+  if (now.lightest == checked_lightest) return;
+  checked_lightest = now.lightest;
+  // The wall's material has no atoms: the table checks each material present against it at
+  // its lightest atom's mass (a sphere against a wall), and the spheres' pairs as well.
+  std::vector<double> lightest = now.lightest;
+  lightest.push_back(0.0);
   ss_table_report_f64 report;
-  const int code = coarse ? ss_table_prepare_coarse_f64(table, update->dt, &lightest, &report)
-                          : ss_table_prepare_f64(table, update->dt, &lightest, &report);
+  const int code =
+      coarse ? ss_table_prepare_coarse_f64(table, update->dt, lightest.data(), &report)
+             : ss_table_prepare_f64(table, update->dt, lightest.data(), &report);
+  // What the refused pair of materials is: atom types (or all atoms) and the wall.
+  const auto named = [this](long m) {
+    if (m == types) return std::string("the wall");
+    return mixed ? fmt::format("atom type {}", m + 1) : std::string("the atoms");
+  };
+  const std::string which = named(report.materials[0]) + " and " + named(report.materials[1]);
   if (code == SS_ERR_UNSTABLE_TIME_STEP)
     error->all(FLERR,
-               "{}: the time step {} s is at or past the kernel's stability limit {} s for the "
-               "lightest spheres",
-               style, update->dt, report.limit);
+               "{}: the time step {} s is at or past the kernel's stability limit {} s for {} "
+               "(their lightest atoms)",
+               style, update->dt, report.limit, which);
   if (code == SS_ERR_INACCURATE_TIME_STEP)
     error->all(FLERR,
-               "{}: the time step {} s is at or past the kernel's accuracy limit {} s for the "
-               "lightest spheres: a contact could rebound faster than its restitution allows "
-               "(add the keyword coarse to take such a step knowingly)",
-               style, update->dt, report.limit);
+               "{}: the time step {} s is at or past the kernel's accuracy limit {} s for {} "
+               "(their lightest atoms): a contact could rebound faster than its restitution "
+               "allows (add the keyword coarse to take such a step knowingly)",
+               style, update->dt, report.limit, which);
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model, true),
                SoftSphere::parameter_error(code));
@@ -198,8 +246,8 @@ void FixWallSoftSphere::post_force(int)
 void FixWallSoftSphere::forces()
 {
   const int nlocal = atom->nlocal;
-  // Every atom is of the table's one material.
-  if ((int) material.size() < nlocal) material.resize(nlocal, 0);
+  // Each atom type is a material of the table, or every atom the first.
+  if (!mixed && (int) material.size() < nlocal) material.resize(nlocal, 0);
   ss_wall_f64 walls[WALLS];
   int count = 0, first = -1;
   for (int w = 0; w < WALLS; w++) {
@@ -218,12 +266,12 @@ void FixWallSoftSphere::forces()
   atoms.angular_velocity = nlocal ? atom->omega[0] : nullptr;
   atoms.radius = atom->radius;
   atoms.mass = atom->rmass;
-  atoms.types = material.data();
-  atoms.first_type = 0;
+  atoms.types = mixed ? atom->type : material.data();
+  atoms.first_type = mixed ? 1 : 0;
   ss_walls_f64 set;
   set.count = (size_t) count;
   set.walls = walls;
-  set.material = 0;
+  set.material = (uint32_t) types;
   // LO's state first, then HI's, in each atom's row.
   set.states = nlocal ? &history[0][STATE * first] : nullptr;
   set.stride = VALUES;

@@ -2,9 +2,12 @@
  *     {x,y,z}plane LO HI
  * Flat walls at LO and HI (either may be NULL) that act on the group's spheres with the
  * soft-sphere kernel's law: a linear law (k_n e k_t eta_ratio mu) or a Hertz-Mindlin law (E nu e
- * eta_ratio mu; the wall is of the same material as the spheres, as LAMMPS's fix wall/gran takes
- * it, and impact V declares the fastest impact the time step is checked for), with the
- * elastic-plastic rolling resistance when asked. The walls go to the kernel's list seam in one
+ * eta_ratio mu; impact V declares the fastest impact the time step is checked for), with the
+ * elastic-plastic rolling resistance when asked. The five numbers are the wall's own material:
+ * under pair_style soft/sphere of the same law (and rolling resistance alike) each atom type
+ * meets the wall by the kernel's mixing rule, as a pair of types of the pair style's
+ * coefficients with the wall's would; otherwise every atom meets the wall with the wall's law
+ * (the spheres taken of the wall's material, as LAMMPS's fix wall/gran does). The walls go to the kernel's list seam in one
  * call per step (the C ABI's walls entry). Each sphere's stored spring against each wall is
  * per-atom state of this fix, so it follows the atom between ranks and into restart files
  * (define the fix again, with the same ID, after read_restart).
@@ -55,11 +58,13 @@ class FixWallSoftSphere : public Fix {
   bool coarse;           // the step taken knowingly past the accuracy limit
   bool warned_inaccurate;    // the coarse step's first inaccurate contacts reported
   double **history;      // per atom: the stored state against LO, then HI
-  std::vector<int> material;    // zeros: every atom is of the table's one material
+  std::vector<int> material;    // zeros: every atom is of the table's first material
+  int types;             // the table's sphere materials: the atom types, or 1 (then the wall)
+  int mixed;             // each atom type meets the wall by the pair style's coefficients
   bool advance;
   double built_radius;    // the largest radius the table was made for (0: no atoms)
   double built_inertia;   // the smallest inertia the table was made for
-  double checked_lightest;    // the mass the step was checked at (0: no atoms)
+  std::vector<double> checked_lightest;    // per sphere material, the masses the step was checked at
   void refresh(bool remake);
 
   void forces();

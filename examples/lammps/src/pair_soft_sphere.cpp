@@ -179,6 +179,14 @@ void PairSoftSphere::coeff(int narg, char **arg)
     for (int j = i; j < n; j++) setflag[i][j] = 1;
 }
 
+const ss_coefficients_f64 *PairSoftSphere::own(int t) const
+{
+  const int n = atom->ntypes + 1;
+  if (t < 1 || t >= n || coefficients.size() != (size_t) (n * n) || !given[t * n + t])
+    return nullptr;
+  return &coefficients[t * n + t];
+}
+
 void PairSoftSphere::init_style()
 {
   SoftSphere::require_spheres(lmp, STYLE);

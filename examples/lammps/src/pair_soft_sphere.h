@@ -43,6 +43,13 @@ class PairSoftSphere : public PairGranHookeHistory {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
 
+  /* The law (SS_MODEL_*, -1 before any) and rolling resistance (SS_ROLLING_*) of this style,
+   * and type t's own coefficients (pair_coeff t t, or the style's law for all), null when it
+   * has none: what a wall of its own material mixes with. */
+  int law() const { return model; }
+  int law_rolling() const { return rolling; }
+  const ss_coefficients_f64 *own(int t) const;
+
  private:
   int model;                           // the kernel's SS_MODEL_*, -1 before any law is given
   int style_law;                       // pair_style gave a law for pair_coeff * *
