@@ -749,12 +749,9 @@ fn table_for_heavy_atoms() -> *mut ss_table<f64> {
     table
 }
 
-#[test]
-fn the_step_is_checked_against_the_stiffest_pair_present() {
+/// The Model AA table with material 1 made 100 times stiffer than material 0 (`k_n` 1e6).
+fn table_with_stiff_material_1() -> *mut ss_table<f64> {
     let table = table(SS_MODEL_AA);
-    // Material 1 made 100 times stiffer than material 0 (its mixed pairs 10 times): with equal
-    // masses, its pair with itself binds. Undamped, the limit is 2 / omega = 2 sqrt(m* / k)
-    // (m* = m / 2); damping only lowers it.
     let stiff = ss_coefficients {
         normal_stiffness: 1.0e6,
         ..material(1)
@@ -764,6 +761,15 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
         unsafe { ss_table_set_f64(table, 1, 1, &stiff, null_mut()) },
         SS_OK
     );
+    table
+}
+
+#[test]
+fn the_step_is_checked_against_the_stiffest_pair_present() {
+    // Material 1 made 100 times stiffer than material 0 (its mixed pairs 10 times): with equal
+    // masses, its pair with itself binds. Undamped, the limit is 2 / omega = 2 sqrt(m* / k)
+    // (m* = m / 2); damping only lowers it.
+    let table = table_with_stiff_material_1();
     let m = 1.0e-9;
     let undamped = 2.0 * (m / 2.0 / 1.0e6_f64).sqrt();
     let mut report = ss_table_report::<f64>::default();
@@ -823,20 +829,11 @@ fn the_step_is_checked_against_the_stiffest_pair_present() {
 
 #[test]
 fn the_step_is_checked_against_the_walls_materials() {
-    let table = table(SS_MODEL_AA);
-    // Material 1 made 100 times stiffer than material 0: against material 0's spheres a wall
-    // of it has the mixed k = sqrt(1e4 1e6) = 1e5 at the sphere's own mass m, a pair of
-    // material 0's spheres 1e4 at m / 2. Undamped, the limits are 2 sqrt(m* / k), the wall's
-    // sqrt(5) times the shorter; damping only lowers them.
-    let stiff = ss_coefficients {
-        normal_stiffness: 1.0e6,
-        ..material(1)
-    };
-    // SAFETY: valid pointers.
-    assert_eq!(
-        unsafe { ss_table_set_f64(table, 1, 1, &stiff, null_mut()) },
-        SS_OK
-    );
+    // Against material 0's spheres a wall of the stiff material 1 has the mixed
+    // k = sqrt(1e4 1e6) = 1e5 at the sphere's own mass m, a pair of material 0's spheres 1e4 at
+    // m / 2. Undamped, the limits are 2 sqrt(m* / k), the wall's sqrt(5) times the shorter;
+    // damping only lowers them.
+    let table = table_with_stiff_material_1();
     let m = 1.0e-9;
     let wall_undamped = 2.0 * (m / 1.0e5_f64).sqrt();
     let dt = 1.5 * wall_undamped;
