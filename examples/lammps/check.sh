@@ -20,7 +20,7 @@
 #   7. decks that start empty (fix pour of three Hertz materials onto a wall fix, 1 and 2 ranks),
 #      the step checked when the atoms arrive; atoms without radius and mass refused; walls of
 #      their own material, each atom type meeting the wall as it meets a large sphere of the
-#      wall's material.
+#      wall's material; pair_style hybrid beside gran/hooke/history.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -946,6 +946,45 @@ if [ $status -eq 0 ] && printf '%s' "$output" | grep -q "every atom meets the wa
   && [ -n "$speed" ] && compare "$speed" 0.3 1.6e-3; then ok=0; fi
 result "a wall of another law than the pair style's meets every atom with its own law" "$ok" \
   "exit $status, rebound ${speed:-none} m/s for 0.6 x 0.5: $(printf '%s\n' "$output" | grep -m1 'meets the wall' || true)"
+
+# pair_style hybrid: soft/sphere checks the step against every pair of types, so it is given
+# coefficients for all (pair_coeff * * soft/sphere ...) and the other style's pairs are then
+# mapped to that style (a later pair_coeff replaces the mapping). Two type 1 atoms meeting
+# head-on at 0.1 m/s under soft/sphere (aa, e = 0.9) leave at 0.9 times that (within 0.5 %),
+# beside a type 2 atom of gran/hooke/history.
+cat > "$work/hybrid.in" <<'HYBRID'
+units si
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+region box block 0 0.01 0 0.01 0 0.01
+create_box 2 box
+create_atoms 1 single 0.003 0.005 0.005
+create_atoms 1 single 0.0041 0.005 0.005
+create_atoms 2 single 0.008 0.005 0.005
+set type 1 diameter 1e-3 density 2500
+set type 2 diameter 1e-3 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.1
+set atom 2 vx -0.1
+plugin load ${plugin}
+pair_style hybrid soft/sphere gran/hooke/history 1000 NULL 50 NULL 0.5 1
+pair_coeff * * soft/sphere aa 1000 0.9 285.7 0.5 0.5
+pair_coeff 2 2 gran/hooke/history
+pair_coeff 1 2 gran/hooke/history
+fix integrate all nve/sphere
+timestep 1e-6
+run 5000
+print "RESULT $(vx[1]) $(vx[2])"
+HYBRID
+output="$(cd "$work" && "$lmp" -in hybrid.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+row="$(printf '%s\n' "$output" | sed -n 's/^RESULT //p')"
+ok=1
+if [ $status -eq 0 ] && [ -n "$row" ] && compare "$(echo "$row" | cut -d' ' -f1)" -0.09 5e-3 \
+  && compare "$(echo "$row" | cut -d' ' -f2)" 0.09 5e-3; then ok=0; fi
+result "pair_style hybrid soft/sphere gran/hooke/history: soft/sphere's pair rebounds at its e" "$ok" \
+  "exit $status, velocities after: ${row:-none} (0.9 x 0.1 m/s) $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
