@@ -731,14 +731,11 @@ pub(crate) unsafe fn table_set_walls<F: Float>(
     let Some(table) = (unsafe { table.as_mut() }) else {
         return SS_ERR_NULL;
     };
-    if count > 0 && materials.is_null() {
-        return SS_ERR_NULL;
-    }
-    let given = if count == 0 {
-        &[][..]
-    } else {
-        // SAFETY: `count` ids (the caller's promise), checked non-null.
-        unsafe { std::slice::from_raw_parts(materials, count) }
+    // SAFETY: `count` ids (the caller's promise); null only with none.
+    let given = match unsafe { crate::arrays::read(materials, count) } {
+        Some(given) => given,
+        None if count == 0 => &[],
+        None => return SS_ERR_NULL,
     };
     each_table!(&mut table.table, t => t.set_walls(given))
 }

@@ -183,16 +183,12 @@ void FixWallSoftSphere::refresh(bool remake)
   const SoftSphere::Present now =
       SoftSphere::present(lmp, style, types, mixed ? atom->type : nullptr, 1);
   const bool inertia = rolling > 0;
-  if (remake || table == nullptr || now.largest_radius > built_radius ||
-      (inertia && now.smallest_inertia < built_inertia)) {
+  if (remake || table == nullptr || now.outgrows(built_radius, built_inertia, inertia)) {
     ss_table_free_f64(table);
     table = nullptr;
-    // With no atoms yet any size will do: nothing is checked against it.
-    const double smallest = now.smallest_inertia > 0.0 ? now.smallest_inertia : 1.0;
-    table = new_table(now.largest_radius > 0.0 ? now.largest_radius : 1.0,
-                      inertia ? smallest : 1.0);
+    table = new_table(now.table_radius(), inertia ? now.table_inertia() : 1.0);
     built_radius = now.largest_radius;
-    built_inertia = smallest;
+    built_inertia = now.table_inertia();
     checked_lightest.clear();
   }
   if (now.lightest == checked_lightest) return;

@@ -219,16 +219,13 @@ void PairSoftSphere::refresh(bool remake)
 {
   const SoftSphere::Present now = SoftSphere::present(lmp, STYLE, atom->ntypes, atom->type, 1);
   const bool inertia = rolling > 0;
-  if (remake || table == nullptr || now.largest_radius > built_radius ||
-      (inertia && now.smallest_inertia < built_inertia)) {
+  if (remake || table == nullptr || now.outgrows(built_radius, built_inertia, inertia)) {
     ss_table_free_f64(table);
     table = nullptr;
-    // The largest pair of spheres has R* = R / 2; with no atoms yet any size will do.
-    const double radius = now.largest_radius > 0.0 ? now.largest_radius : 1.0;
-    const double smallest = now.smallest_inertia > 0.0 ? now.smallest_inertia : 1.0;
-    table = new_table(atom->ntypes, 0.5 * radius, inertia ? smallest : 1.0);
+    // The largest pair of spheres has R* = R / 2.
+    table = new_table(atom->ntypes, 0.5 * now.table_radius(), inertia ? now.table_inertia() : 1.0);
     built_radius = now.largest_radius;
-    built_inertia = smallest;
+    built_inertia = now.table_inertia();
     const int n = atom->ntypes + 1;
     for (int i = 1; i < n; i++)
       for (int j = i; j < n; j++) {

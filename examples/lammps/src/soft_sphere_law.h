@@ -56,6 +56,18 @@ namespace SoftSphere {
     double largest_radius;
     double smallest_inertia;
     std::vector<double> lightest;
+
+    /* The radius and inertia a law table is made for: the atoms', or any (1) with no atoms,
+     * which the table checks nothing against. */
+    double table_radius() const { return largest_radius > 0.0 ? largest_radius : 1.0; }
+    double table_inertia() const { return smallest_inertia > 0.0 ? smallest_inertia : 1.0; }
+
+    /* Whether a table made for `radius` and `inertia` (read only with `rolling`) must be made
+     * again for these atoms: a larger one, or one of smaller inertia, has arrived. */
+    bool outgrows(double radius, double inertia, bool rolling) const
+    {
+      return largest_radius > radius || (rolling && smallest_inertia < inertia);
+    }
   };
   Present present(LAMMPS *lmp, const std::string &style, int types, const int *kind,
                   int first);
