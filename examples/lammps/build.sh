@@ -28,18 +28,18 @@ fi
 lammps_build="$cache/lammps-build"
 lmp="$lammps_build/lmp"
 if [ ! -x "$lmp" ]; then
-  src="$(find "$cache" -maxdepth 3 -name CMakeLists.txt -path '*/cmake/*' 2>/dev/null | head -n 1)"
+  src="$(find "$cache" -maxdepth 3 -name CMakeLists.txt -path '*/cmake/*' -print -quit 2>/dev/null)"
   if [ -z "$src" ]; then
     if ! grep -rqs '^Types: deb-src' /etc/apt/sources.list.d/; then
       # A deb-src entry made by copying the machine's own apt source entry.
-      entry="$(grep -lrs '^Types: deb$' /etc/apt/sources.list.d/*.sources | head -n 1)"
+      entry="$(grep -lrs '^Types: deb$' /etc/apt/sources.list.d/*.sources | head -n 1 || true)"
       [ -n "$entry" ] || { say "no apt source entry to copy for deb-src"; exit 1; }
       sed 's/^Types: deb$/Types: deb-src/' "$entry" > /etc/apt/sources.list.d/soft-sphere-deb-src.sources
       apt-get update -qq >&2
     fi
     say "fetching the lammps source package into $cache"
     (cd "$cache" && apt-get source -qq lammps >&2)
-    src="$(find "$cache" -maxdepth 3 -name CMakeLists.txt -path '*/cmake/*' | head -n 1)"
+    src="$(find "$cache" -maxdepth 3 -name CMakeLists.txt -path '*/cmake/*' -print -quit)"
   fi
   say "building LAMMPS (MPI, GRANULAR, PLUGIN, shared) in $lammps_build: a few CPU-minutes once"
   rm -rf "$lammps_build"

@@ -689,7 +689,7 @@ BAD
   status=$?
   message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
   ok=1
-  if [ $status -ne 0 ] && printf '%s' "$message" | grep -q "$3" && ! printf '%s' "$output" | grep -qi nan; then ok=0; fi
+  if [ $status -ne 0 ] && grep -q "$3" <<< "$message" && ! grep -qi nan <<< "$output"; then ok=0; fi
   result "bad input: $1" "$ok" "${message:-no ERROR line (exit $status)}"
 }
 bad "negative stiffness" "soft/sphere aa -1000 0.9 285.7 0.5 0.5" "k_n (normal stiffness) must be positive" 1e-6
@@ -725,7 +725,7 @@ BAD
   status=$?
   message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
   ok=1
-  if [ $status -ne 0 ] && printf '%s' "$message" | grep -q "$words" && ! printf '%s' "$output" | grep -qi nan; then ok=0; fi
+  if [ $status -ne 0 ] && grep -q "$words" <<< "$message" && ! grep -qi nan <<< "$output"; then ok=0; fi
   result "bad input: $name" "$ok" "${message:-no ERROR line (exit $status)}"
 }
 bad_pairs "a type with no coefficients" "no coefficients for types 1 and 2" \
@@ -778,7 +778,7 @@ status=$?
 pair_warnings="$(printf '%s\n' "$output" | grep -c 'WARNING: pair_style soft/sphere: coarse step: contacts past .* at step [0-9]*: [1-9]' || true)"
 wall_warnings="$(printf '%s\n' "$output" | grep -c 'WARNING: fix wall/soft/sphere: coarse step: contacts past .* at step [0-9]*: [1-9]' || true)"
 ok=1
-if [ $status -eq 0 ] && [ "$pair_warnings" -eq 1 ] && [ "$wall_warnings" -eq 1 ] && ! printf '%s' "$output" | grep -q '^ERROR'; then ok=0; fi
+if [ $status -eq 0 ] && [ "$pair_warnings" -eq 1 ] && [ "$wall_warnings" -eq 1 ] && ! grep -q '^ERROR' <<< "$output"; then ok=0; fi
 result "coarse step taken knowingly (pair_style and fix wall keyword coarse)" "$ok" \
   "exit $status, pair warnings $pair_warnings, wall warnings $wall_warnings: $(printf '%s\n' "$output" | grep -m1 'coarse step' || true)"
 # Restart files do not keep the keyword: read back, the run goes on only when pair_style asks
@@ -795,8 +795,8 @@ again_status=$?
 plain="$(restarted '')"
 plain_status=$?
 ok=1
-if [ $again_status -eq 0 ] && printf '%s' "$again" | grep -q 'Loop time' \
-  && [ $plain_status -ne 0 ] && printf '%s' "$plain" | grep -q '^ERROR.*accuracy limit.*add the keyword coarse'; then ok=0; fi
+if [ $again_status -eq 0 ] && grep -q 'Loop time' <<< "$again" \
+  && [ $plain_status -ne 0 ] && grep -q '^ERROR.*accuracy limit.*add the keyword coarse' <<< "$plain"; then ok=0; fi
 result "coarse step after read_restart (asked again / not)" "$ok" \
   "exit $again_status / $plain_status: $(printf '%s\n' "$plain" | grep -m1 '^ERROR' | cut -c1-90 || true)"
 
@@ -857,7 +857,7 @@ output="$(cd "$work" && "$lmp" -in pour_long.in -var plugin "$plugin" -log none 
 status=$?
 message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 ok=1
-if [ $status -ne 0 ] && printf '%s' "$message" | grep -q 'soft/sphere: the time step 0.0002 s is at or past the kernel.s .* limit .* for types'; then ok=0; fi
+if [ $status -ne 0 ] && grep -q 'soft/sphere: the time step 0.0002 s is at or past the kernel.s .* limit .* for types' <<< "$message"; then ok=0; fi
 result "a step too long for the atoms fix pour brings stops the run when they arrive" "$ok" "${message:-no ERROR line (exit $status)}"
 # Atoms without radius and mass: an ERROR, not a crash.
 printf '%s\n' 'units si' 'atom_style atomic' 'region box block 0 0.01 0 0.01 0 0.01' \
@@ -868,7 +868,7 @@ output="$(cd "$work" && "$lmp" -in atomic.in -var plugin "$plugin" -log none 2>&
 status=$?
 message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 ok=1
-if [ $status -ne 0 ] && printf '%s' "$message" | grep -q 'soft/sphere requires the atom attributes radius, rmass'; then ok=0; fi
+if [ $status -ne 0 ] && grep -q 'soft/sphere requires the atom attributes radius, rmass' <<< "$message"; then ok=0; fi
 result "bad input: atom_style atomic" "$ok" "${message:-no ERROR line (exit $status)}"
 
 # Walls of their own material: under pair_style soft/sphere each atom type meets the wall by
@@ -942,7 +942,7 @@ output="$(cd "$work" && "$lmp" -in wall_law.in -var plugin "$plugin" -log none 2
 status=$?
 speed="$(printf '%s\n' "$output" | awk '/^ *Step/{f=1;next} /^Loop/{f=0} f' | tail -1 | awk '{print $3}')"
 ok=1
-if [ $status -eq 0 ] && printf '%s' "$output" | grep -q "every atom meets the wall with the wall's law" \
+if [ $status -eq 0 ] && grep -q "every atom meets the wall with the wall's law" <<< "$output" \
   && [ -n "$speed" ] && compare "$speed" 0.3 1.6e-3; then ok=0; fi
 result "a wall of another law than the pair style's meets every atom with its own law" "$ok" \
   "exit $status, rebound ${speed:-none} m/s for 0.6 x 0.5: $(printf '%s\n' "$output" | grep -m1 'meets the wall' || true)"
