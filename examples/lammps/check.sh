@@ -986,5 +986,148 @@ if [ $status -eq 0 ] && [ -n "$row" ] && compare "$(echo "$row" | cut -d' ' -f1)
 result "pair_style hybrid soft/sphere gran/hooke/history: soft/sphere's pair rebounds at its e" "$ok" \
   "exit $status, velocities after: ${row:-none} (0.9 x 0.1 m/s) $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 
+# pair_style hybrid with coefficients for soft/sphere's own types only: types 1 and 2 (aa,
+# e = 0.9 and 0.5) are soft/sphere's, type 3 and its cross pairs gran/hooke/history's. LAMMPS
+# mixes the pair 1-2 through soft/sphere (init_one), which makes its law by the kernel's rule
+# (restitution a geometric mean); the step is checked for soft/sphere's pairs alone. Equal
+# spheres meeting head-on at 0.1 m/s leave at sqrt(0.9 0.5) = 0.67082 times that (within
+# 0.5 %); the type 3 pair, gran/hooke/history's, rebounds too.
+overlap_deck() { # PAIR-STYLE-AND-COEFFICIENTS (lines)
+  cat <<OVERLAP
+units si
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+region box block 0 0.02 0 0.01 0 0.01
+create_box 3 box
+create_atoms 1 single 0.003 0.005 0.005
+create_atoms 2 single 0.0041 0.005 0.005
+create_atoms 3 single 0.012 0.005 0.005
+create_atoms 3 single 0.0131 0.005 0.005
+set type 1*3 diameter 1e-3 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.1
+set atom 2 vx -0.1
+set atom 3 vx 0.1
+set atom 4 vx -0.1
+plugin load \${plugin}
+$1
+fix integrate all nve/sphere
+timestep 1e-6
+run 5000
+print "RESULT \$(vx[1]) \$(vx[2]) \$(vx[3]) \$(vx[4])"
+OVERLAP
+}
+mixed_rebound() { # NAME DECK-FILE: the 1-2 pair at sqrt(0.45) of 0.1 m/s, the 3-3 pair apart
+  output="$(cd "$work" && "$lmp" -in "$2" -var plugin "$plugin" -log none 2>&1)"
+  status=$?
+  row="$(printf '%s\n' "$output" | sed -n 's/^RESULT //p')"
+  ok=1
+  if [ $status -eq 0 ] && [ -n "$row" ] \
+    && compare "$(echo "$row" | cut -d' ' -f1)" -0.067082 5e-3 \
+    && compare "$(echo "$row" | cut -d' ' -f2)" 0.067082 5e-3 \
+    && python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) < 0 < float(sys.argv[2]) else 1)" \
+      "$(echo "$row" | cut -d' ' -f3)" "$(echo "$row" | cut -d' ' -f4)"; then ok=0; fi
+  result "$1" "$ok" "exit $status, velocities after: ${row:-none} (+-0.067082 for the 1-2 pair) $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+}
+overlap_deck "pair_style hybrid soft/sphere gran/hooke/history 1000 NULL 50 NULL 0.5 1
+pair_coeff 1 1 soft/sphere aa 1000 0.9 285.7 0.5 0.5
+pair_coeff 2 2 soft/sphere aa 1000 0.5 285.7 0.5 0.5
+pair_coeff 3 3 gran/hooke/history
+pair_coeff 1 3 gran/hooke/history
+pair_coeff 2 3 gran/hooke/history" > "$work/hybrid_own.in"
+mixed_rebound "pair_style hybrid, coefficients for soft/sphere's types only: the mixed pair rebounds at sqrt(e1 e2)" hybrid_own.in
+
+# pair_style hybrid/overlay, under which LAMMPS mixes no pair: the cross pair is given to
+# soft/sphere as 'pair_coeff 1 2 soft/sphere mix', the same law by the kernel's rule. Beside
+# pair_style zero on every pair (no force), the same rebound as above.
+overlap_deck "pair_style hybrid/overlay soft/sphere zero 0.002
+pair_coeff 1 1 soft/sphere aa 1000 0.9 285.7 0.5 0.5
+pair_coeff 2 2 soft/sphere aa 1000 0.5 285.7 0.5 0.5
+pair_coeff 1 2 soft/sphere mix
+pair_coeff 3 3 soft/sphere aa 1000 0.5 285.7 0.5 0.5
+pair_coeff 1 3 soft/sphere mix
+pair_coeff 2 3 soft/sphere mix
+pair_coeff * * zero" > "$work/overlay.in"
+mixed_rebound "pair_style hybrid/overlay soft/sphere zero, the cross pair given as 'mix': it rebounds at sqrt(e1 e2)" overlay.in
+
+# A type has nothing to mix with itself.
+sed 's|^pair_coeff 1 2 soft/sphere mix|pair_coeff 1 1 soft/sphere mix|' "$work/overlay.in" > "$work/mix_self.in"
+output="$(cd "$work" && "$lmp" -in mix_self.in -var plugin "$plugin" -log none 2>&1)"
+status=$?
+ok=1
+if [ $status -ne 0 ] && grep -q 'pair_coeff 1 1 mix: type 1 has nothing to mix with itself' <<< "$output"; then ok=0; fi
+result "bad input: pair_coeff I I mix" "$ok" "$(printf '%s\n' "$output" | grep -m1 '^ERROR' || echo "exit $status, no ERROR")"
+
+# Moving walls (fix wall/gran's keywords and convention). A 1 mm sphere resting on a floor
+# that starts to shear at V = 0.1 m/s: friction drags it until its contact point moves with the
+# floor, and the angular momentum about the contact point makes it roll at 2/7 V (within 1 %,
+# after 0.1 s; native fix wall/gran hooke/history beside it). A floor wiggling along its normal
+# (A = 20 um, period 20 ms, A w^2 = 2 m/s^2 below g) carries the sphere: after 1.5 periods the
+# floor is at 2 A (A (1 - cos w t)) and the sphere's centre at R + 2 A less its weight's
+# overlap (within 1 % of A), as native fix wall/gran wiggle's; and a run written to a restart
+# file at 0.75 periods and read back goes on to the same centre (the wiggle's phase kept).
+moving_deck() { # MOTION (shear x 0.1 | wiggle z 2e-5 0.02), WALL (ours | native), STEPS, [restart|resume]
+  local fix
+  if [ "$2" = ours ]; then
+    fix="fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL $1"
+  else
+    fix="fix floor all wall/gran hooke/history 1000 NULL 50 NULL 0.5 1 zplane 0 NULL $1"
+  fi
+  if [ "${4:-}" = resume ]; then
+    printf '%s\n' "plugin load \${plugin}" "read_restart moving.restart"
+  else
+    printf '%s\n' "units si" "atom_style sphere" "atom_modify map array" "boundary p p f" \
+      "comm_modify vel yes" "region box block -0.01 0.01 -0.01 0.01 0 0.01" "create_box 1 box" \
+      "create_atoms 1 single 0 0 0.0005" "set type 1 diameter 1e-3 density 2500" \
+      "velocity all set 0 0 0" "plugin load \${plugin}" "pair_style zero 0.001" "pair_coeff * *"
+  fi
+  printf '%s\n' "neighbor 0.0001 bin" "fix gravity all gravity 9.81 vector 0 0 -1" \
+    "fix integrate all nve/sphere" "$fix" "timestep 2e-6" "run $3"
+  [ "${4:-}" = restart ] && echo "write_restart moving.restart"
+  printf '%s\n' "print \"RESULT \$(vx[1]) \$(z[1])\""
+}
+moving() { # deck file: "vx z" at the end, or nothing
+  (cd "$work" && "$lmp" -in "$1" -var plugin "$plugin" -log none 2>&1) | sed -n 's/^RESULT //p'
+}
+moving_deck "shear x 0.1" ours 50000 > "$work/shear.in"
+moving_deck "shear x 0.1" native 50000 > "$work/shear_native.in"
+ours="$(moving shear.in)"
+native="$(moving shear_native.in)"
+ok=1
+if [ -n "$ours" ] && compare "${ours%% *}" 0.0285714 1e-2; then ok=0; fi
+result "a floor shearing at 0.1 m/s rolls a resting sphere at 2/7 of it" "$ok" \
+  "vx after 0.1 s: ${ours%% *} (2/7 x 0.1 = 0.0285714), native fix wall/gran: ${native%% *}"
+moving_deck "wiggle z 2e-5 0.02" ours 15000 > "$work/wiggle.in"
+moving_deck "wiggle z 2e-5 0.02" native 15000 > "$work/wiggle_native.in"
+moving_deck "wiggle z 2e-5 0.02" ours 7500 restart > "$work/wiggle_first.in"
+moving_deck "wiggle z 2e-5 0.02" ours 7500 resume > "$work/wiggle_second.in"
+ours="$(moving wiggle.in)"
+native="$(moving wiggle_native.in)"
+moving wiggle_first.in > /dev/null
+resumed="$(moving wiggle_second.in)"
+ok=1
+if [ -n "$ours" ] && [ -n "$native" ] && [ -n "$resumed" ] && python3 - "${ours##* }" "${native##* }" "${resumed##* }" <<'PY'; then ok=0; fi
+import sys
+ours, native, resumed = map(float, sys.argv[1:])
+expected = 0.0005 + 2 * 2e-5
+sys.exit(0 if abs(ours - expected) < 2e-7 and abs(native - expected) < 2e-7
+         and abs(resumed - ours) <= 1e-12 * ours else 1)
+PY
+result "a floor wiggling along its normal carries a resting sphere, across a restart" "$ok" \
+  "centre after 1.5 periods: ${ours##* } (R + 2 A = 0.00054), native fix wall/gran: ${native##* }, written and read back at 0.75 periods: ${resumed##* }"
+bad_pairs "a wiggle with no period" "wiggle: the period must be a positive number" \
+  "pair_style zero 0.001" "pair_coeff * *" \
+  "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL wiggle z 1e-5 0"
+bad_pairs "a plane sheared along its normal" "a plane shears in its own plane" \
+  "pair_style zero 0.001" "pair_coeff * *" \
+  "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL shear z 0.1"
+bad_pairs "walls that wiggle and shear" "wiggle or shear, not both" \
+  "pair_style zero 0.001" "pair_coeff * *" \
+  "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL shear x 0.1 wiggle z 1e-5 0.01"
+bad_pairs "a cylinder wall" "no plane wall given.*zcylinder is not supported" \
+  "pair_style zero 0.001" "pair_coeff * *" \
+  "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.004 NULL NULL"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1851,6 +1851,23 @@ int32_t ss_table_prepare_f64(ss_table_f64 *table,
 int32_t ss_table_set_walls_f64(ss_table_f64 *table, const uint32_t *materials, size_t count);
 
 /**
+ * The pairs of materials the table evaluates, `count` pairs of ids in `pairs` (`a, b`
+ * names both orders; replacing any given before; none: every pair, the default). The
+ * others are another pair style's (LAMMPS `pair_style hybrid`): each prepare checks
+ * the step for the pairs named alone (and every material present against the walls),
+ * a material in none of them needs no coefficients, and the entries refuse a pair of
+ * the others (`SS_ERR_MATERIAL`, with its atoms in the report). Returns `SS_OK`,
+ * `SS_ERR_NULL`, `SS_ERR_LENGTH` for a count past memory, or `SS_ERR_MATERIAL` for an
+ * id past the table (nothing changed). The table does not evaluate until prepared
+ * again.
+ *
+ * # Safety
+ * `pairs` must hold `2 count` ids (it may be null when `count` is 0); `table` be valid
+ * or null.
+ */
+int32_t ss_table_set_pairs_f64(ss_table_f64 *table, const uint32_t *pairs, size_t count);
+
+/**
  * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
  * within every pair's stability limit is accepted (`SS_ERR_UNSTABLE_TIME_STEP` past
  * it), and each evaluation counts its contacts past their law's accuracy limit in
@@ -2172,6 +2189,23 @@ int32_t ss_table_prepare_f32(ss_table_f32 *table,
  * valid or null.
  */
 int32_t ss_table_set_walls_f32(ss_table_f32 *table, const uint32_t *materials, size_t count);
+
+/**
+ * The pairs of materials the table evaluates, `count` pairs of ids in `pairs` (`a, b`
+ * names both orders; replacing any given before; none: every pair, the default). The
+ * others are another pair style's (LAMMPS `pair_style hybrid`): each prepare checks
+ * the step for the pairs named alone (and every material present against the walls),
+ * a material in none of them needs no coefficients, and the entries refuse a pair of
+ * the others (`SS_ERR_MATERIAL`, with its atoms in the report). Returns `SS_OK`,
+ * `SS_ERR_NULL`, `SS_ERR_LENGTH` for a count past memory, or `SS_ERR_MATERIAL` for an
+ * id past the table (nothing changed). The table does not evaluate until prepared
+ * again.
+ *
+ * # Safety
+ * `pairs` must hold `2 count` ids (it may be null when `count` is 0); `table` be valid
+ * or null.
+ */
+int32_t ss_table_set_pairs_f32(ss_table_f32 *table, const uint32_t *pairs, size_t count);
 
 /**
  * As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step

@@ -5,7 +5,7 @@
 /// `REAL` under the given names. The header test expands these invocations for cbindgen, which
 /// does not expand macros itself.
 macro_rules! entry_points {
-    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_prepare_coarse:ident, $table_set_walls:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
+    ($real:ident: $law_new:ident, $law_free:ident, $sphere_sphere:ident, $sphere_wall:ident, $bound_new:ident, $bound_free:ident, $bound_sphere_sphere:ident, $bound_sphere_wall:ident, $bound_sphere_pairs:ident, $advance:ident, $duration:ident, $limit:ident, $rejected:ident, $table_new:ident, $table_free:ident, $table_set:ident, $table_prepare:ident, $table_prepare_coarse:ident, $table_set_walls:ident, $table_set_pairs:ident, $table_evaluate:ident, $table_pair:ident, $table_values:ident, $table_mirror:ident, $table_walls:ident) => {
         /// Validates `*params` and writes a new law handle to `*out` (free it with the matching
         /// `ss_law_free_*`). Returns `SS_OK` or an error code; `*out` is untouched on error.
         ///
@@ -294,6 +294,29 @@ macro_rules! entry_points {
         ) -> i32 {
             // SAFETY: forwarded contract.
             unsafe { table::table_set_walls(table, materials, count) }
+        }
+
+        /// The pairs of materials the table evaluates, `count` pairs of ids in `pairs` (`a, b`
+        /// names both orders; replacing any given before; none: every pair, the default). The
+        /// others are another pair style's (LAMMPS `pair_style hybrid`): each prepare checks
+        /// the step for the pairs named alone (and every material present against the walls),
+        /// a material in none of them needs no coefficients, and the entries refuse a pair of
+        /// the others (`SS_ERR_MATERIAL`, with its atoms in the report). Returns `SS_OK`,
+        /// `SS_ERR_NULL`, `SS_ERR_LENGTH` for a count past memory, or `SS_ERR_MATERIAL` for an
+        /// id past the table (nothing changed). The table does not evaluate until prepared
+        /// again.
+        ///
+        /// # Safety
+        /// `pairs` must hold `2 count` ids (it may be null when `count` is 0); `table` be valid
+        /// or null.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $table_set_pairs(
+            table: *mut table::ss_table<$real>,
+            pairs: *const u32,
+            count: usize,
+        ) -> i32 {
+            // SAFETY: forwarded contract.
+            unsafe { table::table_set_pairs(table, pairs, count) }
         }
 
         /// As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step

@@ -218,6 +218,15 @@ where
             }
             k += count;
         }
+        // Another pair style's pairs (the table names those it evaluates) are refused.
+        if let Some(evaluated) = &self.evaluated {
+            let material = |k: u32| work.material[k as usize] as usize;
+            let foreign = |&&[i, j]: &&[u32; 2]| !evaluated[material(i)][material(j)];
+            if let Some(&[i, j]) = work.pairs.iter().find(foreign) {
+                report.atoms = [i64::from(i), i64::from(j)];
+                return SS_ERR_MATERIAL;
+            }
+        }
         let contacts = work.pairs.len();
         work.saved.resize(contacts, Default::default());
         work.loads.resize(2 * n, Vec3::ZERO);
@@ -544,7 +553,9 @@ where
         let Some((table, step)) = &self.ready else {
             return SS_ERR_NOT_PREPARED;
         };
-        let Some(law) = table.law(a, b) else {
+        // A material of the table (the kernel's holds `SS_MATERIALS_MAX`), in a pair it evaluates.
+        let ours = a < self.materials && b < self.materials && self.evaluates(a, b);
+        let (true, Some(law)) = (ours, table.law(a, b)) else {
             return SS_ERR_MATERIAL;
         };
         let mut state = match values {

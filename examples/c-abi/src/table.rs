@@ -247,9 +247,16 @@ pub(crate) struct Tabled<F: Float, X: Mixing<F>> {
     /// The materials walls are made of: the step is checked against each of them with every
     /// material present, at its lightest atom's mass.
     pub(crate) walls: Vec<u32>,
+    /// The pairs of materials the table evaluates, both ways round; `None`: every pair. The
+    /// others are another pair style's (LAMMPS `pair_style hybrid`): the step is not checked
+    /// for them and the entries refuse them.
+    pub(crate) evaluated: Option<Pairs>,
     pub(crate) work: Workspace<F, <X::Law as Law>::State>,
     pub(crate) wall_work: WallWork<F, <X::Law as Law>::State>,
 }
+
+/// Which pairs of materials a table evaluates.
+pub(crate) type Pairs = [[bool; SS_MATERIALS_MAX]; SS_MATERIALS_MAX];
 
 /// The memory an evaluation gathers the list into and the kernel writes through.
 #[derive(Debug, Default)]
@@ -470,6 +477,7 @@ where
             given: [[None; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
             ready: None,
             walls: Vec::new(),
+            evaluated: None,
             work: Workspace {
                 material: Vec::new(),
                 pairs: Vec::new(),
@@ -523,6 +531,30 @@ where
         SS_OK
     }
 
+    /// The pairs of materials the table evaluates, as pairs of ids (`a, b` names both orders;
+    /// none: every pair): every id a material of the table, or nothing changes.
+    fn set_pairs(&mut self, ids: &[u32]) -> i32 {
+        if ids.iter().any(|&m| m as usize >= self.materials) {
+            return SS_ERR_MATERIAL;
+        }
+        self.evaluated = (!ids.is_empty()).then(|| {
+            let mut evaluated = [[false; SS_MATERIALS_MAX]; SS_MATERIALS_MAX];
+            for pair in ids.chunks_exact(2) {
+                let (a, b) = (pair[0] as usize, pair[1] as usize);
+                evaluated[a][b] = true;
+                evaluated[b][a] = true;
+            }
+            evaluated
+        });
+        self.ready = None;
+        SS_OK
+    }
+
+    /// Whether the table evaluates materials `a` and `b` together.
+    pub(crate) fn evaluates(&self, a: usize, b: usize) -> bool {
+        self.evaluated.is_none_or(|e| e[a][b])
+    }
+
     /// Builds every law and checks `dt` against each pair of materials present (the lightest
     /// mass of each; absent where it is not a positive finite number), for accuracy, or for
     /// stability only when `coarse`.
@@ -533,28 +565,33 @@ where
         report: &mut ss_table_report<F>,
     ) -> i32 {
         self.ready = None;
-        // Every table has a material 0 (`new_table` refuses none): its law seeds the table.
-        let mut table = match self.law(0, 0) {
+        // The first pair the table evaluates (material 0 with itself, for a table of every
+        // pair) seeds the table; another style's pairs keep that law, never evaluated.
+        let materials = self.materials;
+        let pairs = (0..materials).flat_map(|a| (a..materials).map(move |b| (a, b)));
+        let (a0, b0) = (pairs.clone())
+            .find(|&(a, b)| self.evaluates(a, b))
+            .unwrap_or((0, 0));
+        let mut table = match self.law(a0, b0) {
             Ok(law) => MaterialTable::<X::Law, SS_MATERIALS_MAX>::uniform(law),
             Err((code, parameter)) => {
-                report.materials = [0, 0];
+                report.materials = [a0 as i64, b0 as i64];
                 report.parameter = parameter;
                 return code;
             }
         };
-        for a in 0..self.materials {
-            for b in a..self.materials {
-                report.materials = [a as i64, b as i64];
-                let law = match self.law(a, b) {
-                    Ok(law) => law,
-                    Err((code, parameter)) => {
-                        report.parameter = parameter;
-                        return code;
-                    }
-                };
-                if table.set(a, b, law).is_err() {
-                    return SS_ERR_MATERIAL;
+        for (a, b) in pairs {
+            report.materials = [a as i64, b as i64];
+            let law = match self.law(a, b) {
+                Ok(law) => law,
+                Err(_) if !self.evaluates(a, b) => continue,
+                Err((code, parameter)) => {
+                    report.parameter = parameter;
+                    return code;
                 }
+            };
+            if table.set(a, b, law).is_err() {
+                return SS_ERR_MATERIAL;
             }
         }
         // One sphere of each material present, of its lightest mass: the kernel checks the step
@@ -589,10 +626,12 @@ where
                 material,
             })
             .collect();
-        let step = if coarse {
-            table.coarse_time_step(dt, &spheres, &walls)
-        } else {
-            table.time_step(dt, &spheres, &walls)
+        let step = match self.evaluated {
+            None if coarse => table.coarse_time_step(dt, &spheres, &walls),
+            None => table.time_step(dt, &spheres, &walls),
+            Some(evaluated) => {
+                step_of_pairs(&table, (dt, coarse), (&mass, &material), &walls, &evaluated)
+            }
         };
         let step = match step {
             Ok(step) => step,
@@ -718,6 +757,83 @@ pub(crate) unsafe fn table_set<F: Float>(
         *parameter = rejected;
     }
     code
+}
+
+/// The step checked, for accuracy or (`coarse`) stability only, as the kernel's
+/// `MaterialTable::time_step` checks it but for the pairs of materials `evaluated` alone: each
+/// such pair of the materials present (one sphere of each, of its lightest `mass`) at their
+/// effective mass, and every material present against each wall at its own.
+fn step_of_pairs<L: Law>(
+    table: &MaterialTable<L, SS_MATERIALS_MAX>,
+    (dt, coarse): (L::Float, bool),
+    (mass, material): (&[L::Float], &[u32]),
+    walls: &[MaterialWall<L::Float>],
+    evaluated: &Pairs,
+) -> Result<TimeStep<L::Float>, ListError> {
+    let check = |a: u32, b: u32, effective_mass: L::Float| {
+        // Every id is below `SS_MATERIALS_MAX` (checked where it was given).
+        let law = (table.law(a as usize, b as usize)).ok_or(ListError::Material {
+            sphere: 0,
+            material: b,
+        })?;
+        let checked = if coarse {
+            law.coarse_time_step(dt, effective_mass)
+        } else {
+            law.time_step(dt, effective_mass)
+        };
+        checked.map_err(|error| ListError::TimeStep {
+            materials: [a, b],
+            error,
+        })
+    };
+    let present = material.iter().zip(mass);
+    for (k, (&a, &mass_a)) in present.clone().enumerate() {
+        for (&b, &mass_b) in present.clone().skip(k) {
+            if evaluated[a as usize][b as usize] {
+                check(a, b, soft_sphere::effective_mass(mass_a, mass_b))?;
+            }
+        }
+        for wall in walls {
+            check(a, wall.material, mass_a)?;
+        }
+    }
+    // Nothing present to check with: the step itself (positive and finite).
+    let none = SphereArrays {
+        position: &[],
+        velocity: &[],
+        angular_velocity: &[],
+        radius: &[],
+        mass: &[],
+        material: &[],
+    };
+    if coarse {
+        table.coarse_time_step(dt, &none, &[])
+    } else {
+        table.time_step(dt, &none, &[])
+    }
+}
+
+/// # Safety
+/// As the exported pair setters.
+pub(crate) unsafe fn table_set_pairs<F: Float>(
+    table: *mut ss_table<F>,
+    pairs: *const u32,
+    count: usize,
+) -> i32 {
+    // SAFETY: null is checked; the caller promises validity otherwise.
+    let Some(table) = (unsafe { table.as_mut() }) else {
+        return SS_ERR_NULL;
+    };
+    let Some(ids) = count.checked_mul(2) else {
+        return SS_ERR_LENGTH;
+    };
+    // SAFETY: `2 count` ids (the caller's promise); null only with none.
+    let given = match unsafe { crate::arrays::read(pairs, ids) } {
+        Some(given) => given,
+        None if count == 0 => &[],
+        None => return SS_ERR_NULL,
+    };
+    each_table!(&mut table.table, t => t.set_pairs(given))
 }
 
 /// # Safety

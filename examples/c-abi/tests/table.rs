@@ -896,6 +896,179 @@ fn the_step_is_checked_against_the_walls_materials() {
     unsafe { ss_table_free_f64(table) };
 }
 
+/// Under `pair_style hybrid` another style owns some pairs of types: a table evaluates the pairs
+/// it is given alone. Material 2 has no coefficients here and is in none of them.
+#[test]
+fn a_table_evaluates_only_the_pairs_it_is_given() {
+    let config = ss_table_config {
+        model: SS_MODEL_AA,
+        materials: 3,
+        ..Default::default()
+    };
+    let mut table = null_mut();
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        for m in 0..2 {
+            assert_eq!(
+                ss_table_set_f64(table, m, m, &material(m), null_mut()),
+                SS_OK
+            );
+        }
+    }
+    // Every pair: material 2, present, has nothing to mix from.
+    assert_eq!(
+        prepare(table, [1e-5; 3]),
+        (SS_ERR_MATERIAL, report_of([0, 2]))
+    );
+    // SAFETY: valid pointers.
+    let set = |ids: &[u32]| unsafe { ss_table_set_pairs_f64(table, ids.as_ptr(), ids.len() / 2) };
+    assert_eq!(set(&[0, 0, 1, 0, 1, 1]), SS_OK);
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+
+    // The pairs given give the bits of a table of every pair; a pair of material 2 is refused
+    // with its atoms named, nothing changed.
+    let full = table_of(&config);
+    assert_eq!(prepare(full, [1e-5; 3]).0, SS_OK);
+    let mut host = Host::new(3, 3);
+    let mut reference = host.clone();
+    let before = host.clone();
+    let (code, report_3) = host.evaluate(table, 1, 1, |_, _, _| {});
+    assert_eq!(code, SS_ERR_MATERIAL);
+    let first_foreign = (host.list.iter())
+        .flat_map(|&i| host.neighbours[i as usize].iter().map(move |&j| [i, j]))
+        .find(|pair| pair.iter().any(|&k| host.types[k as usize] == 3))
+        .expect("a pair with an atom of type 3");
+    assert_eq!(report_3.atoms, first_foreign.map(i64::from));
+    assert_eq!(host, before);
+    for t in [&mut host.types, &mut reference.types] {
+        t.iter_mut().filter(|t| **t == 3).for_each(|t| *t = 1);
+    }
+    assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
+    assert_eq!(reference.evaluate(full, 1, 1, |_, _, _| {}).0, SS_OK);
+    assert_eq!(bits(&host.force), bits(&reference.force));
+    assert_eq!(bits(&host.torque), bits(&reference.torque));
+    assert_eq!(host.history, reference.history);
+
+    // One pair at a time: the same answer.
+    let (si, sj) = (host.sphere(0), host.sphere(1));
+    let mut out = ss_forces::default();
+    // SAFETY: valid pointers.
+    unsafe {
+        assert_eq!(
+            ss_table_pair_f64(table, 0, 1, &si, &sj, null(), &mut out),
+            SS_OK
+        );
+        assert_eq!(
+            ss_table_pair_f64(table, 0, 2, &si, &sj, null(), &mut out),
+            SS_ERR_MATERIAL
+        );
+        assert_eq!(
+            ss_table_pair_f64(table, 2, 2, &si, &sj, null(), &mut out),
+            SS_ERR_MATERIAL
+        );
+    }
+
+    // The step is checked for the pairs given alone: material 2 made too stiff for the step is
+    // another style's business, until every pair is the table's again.
+    let stiff = ss_coefficients {
+        normal_stiffness: 1.0e11,
+        ..material(2)
+    };
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_f64(table, 2, 2, &stiff, null_mut()) },
+        SS_OK
+    );
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    // And a pair given that is too stiff is refused, naming it.
+    assert_eq!(set(&[0, 0, 2, 2]), SS_OK);
+    let (code, refused) = prepare(table, [1e-5; 3]);
+    assert_eq!(
+        (code, refused.materials),
+        (SS_ERR_UNSTABLE_TIME_STEP, [2, 2])
+    );
+    // Not with material 2 absent.
+    assert_eq!(prepare(table, [1e-5, 1e-5, 0.0]).0, SS_OK);
+
+    // Bad input changes nothing: an id past the table, a null table, null ids, a count past
+    // memory. A table whose pairs change is prepared again before it evaluates.
+    // SAFETY: valid pointers, or null where the test says.
+    unsafe {
+        assert_eq!(set(&[0, 0, 0, 3]), SS_ERR_MATERIAL);
+        assert_eq!(
+            ss_table_set_pairs_f64(null_mut(), [0, 0].as_ptr(), 1),
+            SS_ERR_NULL
+        );
+        assert_eq!(ss_table_set_pairs_f64(table, null(), 1), SS_ERR_NULL);
+        assert_eq!(
+            ss_table_set_pairs_f64(table, [0, 0].as_ptr(), usize::MAX / 2 + 1),
+            SS_ERR_LENGTH
+        );
+    }
+    let (code, refused) = prepare(table, [1e-5; 3]);
+    assert_eq!(
+        (code, refused.materials),
+        (SS_ERR_UNSTABLE_TIME_STEP, [2, 2]),
+        "the pairs given before are kept"
+    );
+    assert_eq!(set(&[0, 1]), SS_OK);
+    let before = host.clone();
+    assert_eq!(
+        host.evaluate(table, 1, 1, |_, _, _| {}).0,
+        SS_ERR_NOT_PREPARED
+    );
+    assert_eq!(host, before);
+    // None: every pair again (null with no ids is allowed).
+    // SAFETY: valid pointers.
+    assert_eq!(unsafe { ss_table_set_pairs_f64(table, null(), 0) }, SS_OK);
+    // The first pair of material 2 refuses: with material 0 (k sqrt(1e4 1e11)), inaccurate.
+    let report = prepare(table, [1e-5; 3]).1;
+    assert_eq!(
+        (prepare(table, [1e-5; 3]).0, report.materials),
+        (SS_ERR_INACCURATE_TIME_STEP, [0, 2])
+    );
+    assert_eq!(report.parameter, SS_PARAMETER_TIME_STEP);
+    // SAFETY: from ss_table_new_f64.
+    unsafe {
+        ss_table_free_f64(table);
+        ss_table_free_f64(full);
+    }
+}
+
+/// A report naming materials `materials` and no parameter.
+fn report_of(materials: [i64; 2]) -> ss_table_report<f64> {
+    ss_table_report {
+        materials,
+        ..Default::default()
+    }
+}
+
+/// A material id past the table's count is refused one pair at a time, as in a list.
+#[test]
+fn a_single_pair_past_the_table_is_refused() {
+    let table = table(SS_MODEL_AA);
+    assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+    let host = Host::new(4, 3);
+    let (si, sj) = (host.sphere(0), host.sphere(1));
+    let mut out = ss_forces::default();
+    // SAFETY: valid pointers.
+    unsafe {
+        assert_eq!(
+            ss_table_pair_f64(table, 0, 1, &si, &sj, null(), &mut out),
+            SS_OK
+        );
+        for (a, b) in [(3, 0), (0, 3), (SS_MATERIALS_MAX, 0), (usize::MAX, 1)] {
+            assert_eq!(
+                ss_table_pair_f64(table, a, b, &si, &sj, null(), &mut out),
+                SS_ERR_MATERIAL,
+                "materials {a} and {b}"
+            );
+        }
+        ss_table_free_f64(table);
+    }
+}
+
 #[test]
 fn tables_refuse_bad_coefficients_and_missing_materials() {
     let config = ss_table_config {

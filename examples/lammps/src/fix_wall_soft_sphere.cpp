@@ -8,6 +8,7 @@
 #include "force.h"
 #include "fmt/format.h"
 #include "pair_soft_sphere.h"
+#include "math_const.h"
 #include "memory.h"
 #include "neighbor.h"
 #include "soft_sphere_law.h"
@@ -24,23 +25,37 @@ using namespace FixConst;
 FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
     impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true),
-    built_radius(0.0), built_inertia(0.0), types(1), mixed(0)
+    built_radius(0.0), built_inertia(0.0), types(1), mixed(0), motion(NONE), motion_axis(0),
+    amplitude(0.0), omega(0.0), shear_speed(0.0), time_origin(update->ntimestep)
 {
   const std::string style = "fix wall/soft/sphere";
-  if (narg < 12)
+  const char *usage =
+      "Illegal fix wall/soft/sphere command: expected LAW and five numbers, [rolling mu_r k_r "
+      "eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI, [wiggle x|y|z A PERIOD | "
+      "shear x|y|z V]";
+  // The plane and its bounds follow the law's keywords; the walls' motion follows them.
+  const auto is_plane = [](const char *word) {
+    return std::strcmp(word, "xplane") == 0 || std::strcmp(word, "yplane") == 0 ||
+        std::strcmp(word, "zplane") == 0;
+  };
+  int plane_at = 9;
+  while (plane_at < narg && !is_plane(arg[plane_at])) plane_at++;
+  if (narg < 12) error->all(FLERR, usage);
+  if (plane_at + 3 > narg)
     error->all(FLERR,
-               "Illegal fix wall/soft/sphere command: expected LAW and five numbers, "
-               "[rolling mu_r k_r eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI");
+               "{}: no plane wall given (xplane, yplane or zplane LO HI; the kernel's walls are "
+               "planes: zcylinder is not supported)",
+               style);
   SoftSphere::require_spheres(lmp, style);
   model = SoftSphere::model(lmp, style, arg[3]);
   coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
   int k = 9;
-  while (k < narg - 3) {
-    if (std::strcmp(arg[k], "rolling") == 0 && k + 3 < narg - 3) {
+  while (k < plane_at) {
+    if (std::strcmp(arg[k], "rolling") == 0 && k + 3 < plane_at) {
       SoftSphere::rolling(lmp, coefficients, &arg[k + 1]);
       rolling = SS_ROLLING_EPSD;
       k += 4;
-    } else if (std::strcmp(arg[k], "impact") == 0 && k + 1 < narg - 3) {
+    } else if (std::strcmp(arg[k], "impact") == 0 && k + 1 < plane_at) {
       impact_speed = utils::numeric(FLERR, arg[k + 1], false, lmp);
       k += 2;
     } else if (std::strcmp(arg[k], "coarse") == 0) {
@@ -55,23 +70,17 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
                "{}: the Hertz laws check the time step against the fastest impact: give it as "
                "impact V (m/s) after the law's numbers",
                style);
-  const std::string plane = arg[narg - 3];
-  if (plane == "xplane")
-    axis = 0;
-  else if (plane == "yplane")
-    axis = 1;
-  else if (plane == "zplane")
-    axis = 2;
-  else
-    error->all(FLERR, "{}: unknown wall '{}' (xplane, yplane or zplane)", style, plane);
+  const std::string plane = arg[plane_at];
+  axis = plane == "xplane" ? 0 : plane == "yplane" ? 1 : 2;
   for (int w = 0; w < WALLS; w++) {
-    const char *value = arg[narg - 2 + w];
+    const char *value = arg[plane_at + 1 + w];
     present[w] = std::strcmp(value, "NULL") != 0;
     position[w] = present[w] ? utils::numeric(FLERR, value, false, lmp) : 0.0;
   }
   if (!present[0] && !present[1]) error->all(FLERR, "{}: both walls are NULL", style);
   if (present[0] && present[1] && position[0] >= position[1])
     error->all(FLERR, "{}: LO must lie below HI", style);
+  motion_of(style, plane_at + 3, narg, arg);
 
   // The kernel checks the law here already, so a bad parameter stops the input script at this
   // command.
@@ -84,6 +93,53 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+/* The keywords after the plane: wiggle DIM A PERIOD (the walls at LO + A (1 - cos(w t)),
+ * moving at A w sin(w t) along DIM, w = 2 pi / PERIOD, t from the step the fix was defined at,
+ * as fix wall/gran) or shear DIM V (the walls moving at V along DIM, in their plane). */
+void FixWallSoftSphere::motion_of(const std::string &style, int k, int narg, char **arg)
+{
+  const auto direction = [&](const char *keyword, const char *word) {
+    if (std::strcmp(word, "x") == 0) return 0;
+    if (std::strcmp(word, "y") == 0) return 1;
+    if (std::strcmp(word, "z") == 0) return 2;
+    error->all(FLERR, "{}: {} {}: the direction is x, y or z", style, keyword, word);
+    return 0;
+  };
+  while (k < narg) {
+    if (motion != NONE && (std::strcmp(arg[k], "wiggle") == 0 || std::strcmp(arg[k], "shear") == 0))
+      error->all(FLERR, "{}: the walls wiggle or shear, not both", style);
+    if (std::strcmp(arg[k], "wiggle") == 0 && k + 3 < narg) {
+      motion = WIGGLE;
+      motion_axis = direction("wiggle", arg[k + 1]);
+      amplitude = utils::numeric(FLERR, arg[k + 2], false, lmp);
+      const double period = utils::numeric(FLERR, arg[k + 3], false, lmp);
+      if (!std::isfinite(amplitude))
+        error->all(FLERR, "{}: wiggle: the amplitude must be a finite number", style);
+      if (!(period > 0.0) || !std::isfinite(period))
+        error->all(FLERR, "{}: wiggle: the period must be a positive number", style);
+      omega = MathConst::MY_2PI / period;
+      k += 4;
+    } else if (std::strcmp(arg[k], "shear") == 0 && k + 2 < narg) {
+      motion = SHEAR;
+      motion_axis = direction("shear", arg[k + 1]);
+      shear_speed = utils::numeric(FLERR, arg[k + 2], false, lmp);
+      if (!std::isfinite(shear_speed))
+        error->all(FLERR, "{}: shear: the speed must be a finite number", style);
+      if (motion_axis == axis)
+        error->all(FLERR,
+                   "{}: shear {}: a plane shears in its own plane, not along its normal (wiggle "
+                   "moves it along the normal)",
+                   style, arg[k + 1]);
+      k += 3;
+    } else
+      error->all(FLERR, "{}: unknown keyword '{}' after the plane (wiggle x|y|z A PERIOD, shear "
+                        "x|y|z V)",
+                 style, arg[k]);
+  }
+  // The wiggle's phase is kept in restart files.
+  restart_global = 1;
 }
 
 FixWallSoftSphere::~FixWallSoftSphere()
@@ -244,14 +300,23 @@ void FixWallSoftSphere::forces()
   const int nlocal = atom->nlocal;
   // Each atom type is a material of the table, or every atom the first.
   if (!mixed && (int) material.size() < nlocal) material.resize(nlocal, 0);
+  // Where the walls are and how fast they move this step (fix wall/gran's convention).
+  double offset = 0.0, speed = 0.0;
+  if (motion == WIGGLE) {
+    const double phase = omega * (double) (update->ntimestep - time_origin) * update->dt;
+    if (motion_axis == axis) offset = amplitude - amplitude * std::cos(phase);
+    speed = amplitude * omega * std::sin(phase);
+  } else if (motion == SHEAR)
+    speed = shear_speed;
   ss_wall_f64 walls[WALLS];
   int count = 0, first = -1;
   for (int w = 0; w < WALLS; w++) {
     if (!present[w]) continue;
     if (first < 0) first = w;
     std::memset(&walls[count], 0, sizeof(ss_wall_f64));
-    (&walls[count].point.x)[axis] = position[w];
+    (&walls[count].point.x)[axis] = position[w] + offset;
     (&walls[count].normal.x)[axis] = w == 0 ? 1.0 : -1.0;
+    (&walls[count].velocity.x)[motion_axis] = speed;
     count++;
   }
   ss_atoms_f64 atoms;
@@ -356,4 +421,22 @@ int FixWallSoftSphere::size_restart(int)
 int FixWallSoftSphere::maxsize_restart()
 {
   return VALUES + 1;
+}
+
+/* Restart files (global): the step the wiggle started from, so that a run read back goes on
+ * with the walls where they were. */
+void FixWallSoftSphere::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double origin = (double) time_origin;
+  const int size = sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(&origin, sizeof(double), 1, fp);
+}
+
+void FixWallSoftSphere::restart(char *buf)
+{
+  double origin;
+  std::memcpy(&origin, buf, sizeof(double));
+  time_origin = (bigint) origin;
 }

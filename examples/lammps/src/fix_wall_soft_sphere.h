@@ -20,6 +20,7 @@
 #include "fix.h"
 #include "soft_sphere.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -42,9 +43,12 @@ class FixWallSoftSphere : public Fix {
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
  private:
   static constexpr int WALLS = 2;    // LO and HI
+  enum { NONE, WIGGLE, SHEAR };
   static constexpr int STATE = 7;    // the most numbers a law keeps per contact
   static constexpr int VALUES = STATE * WALLS;
   int model;                          // SS_MODEL_*
@@ -54,6 +58,12 @@ class FixWallSoftSphere : public Fix {
   int axis;              // 0, 1, 2 for xplane, yplane, zplane
   int present[WALLS];    // whether LO and HI exist
   double position[WALLS];
+  int motion;            // NONE, WIGGLE or SHEAR (keywords wiggle and shear)
+  int motion_axis;       // the direction the walls move in
+  double amplitude;      // wiggle: amplitude (m) and angular frequency (rad/s)
+  double omega;
+  double shear_speed;    // shear: the walls' speed (m/s)
+  bigint time_origin;    // the step the wiggle starts from (kept in restart files)
   double impact_speed;   // Hertz laws: the declared fastest impact (m/s)
   bool coarse;           // the step taken knowingly past the accuracy limit
   bool warned_inaccurate;    // the coarse step's first inaccurate contacts reported
@@ -68,6 +78,7 @@ class FixWallSoftSphere : public Fix {
   void refresh(bool remake);
 
   void forces();
+  void motion_of(const std::string &style, int k, int narg, char **arg);
   ss_table_f64 *new_table(double largest_radius, double inertia);
 };
 

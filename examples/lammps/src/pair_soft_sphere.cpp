@@ -23,7 +23,7 @@ static const char *STYLE = "pair_style soft/sphere";
 
 PairSoftSphere::PairSoftSphere(LAMMPS *lmp) :
     PairGranHookeHistory(lmp), model(-1), style_law(0), rolling(-1), impact_speed(0.0),
-    coarse(0), warned_inaccurate(0), history_made(0),
+    coarse(0), warned_inaccurate(0), pending(0), history_made(0),
     table(nullptr), built_radius(0.0), built_inertia(0.0)
 {
   std::memset(&style_coefficients, 0, sizeof(style_coefficients));
@@ -123,6 +123,10 @@ void PairSoftSphere::coeff(int narg, char **arg)
   int law = model, rolls = rolling;
   ss_coefficients_f64 c = style_coefficients;
   const int with_rolling = narg == 12 && std::strcmp(arg[8], "rolling") == 0;
+  if (narg == 3 && std::strcmp(arg[2], "mix") == 0) {
+    mix(arg[0], arg[1]);
+    return;
+  }
   if (narg == 2) {
     if (!style_law)
       error->all(FLERR,
@@ -147,7 +151,8 @@ void PairSoftSphere::coeff(int narg, char **arg)
   } else
     error->all(FLERR,
                "Illegal pair_coeff command for soft/sphere: expected I J LAW and five numbers "
-               "[rolling mu_r k_r eta_r] (or I J alone, with the law given to pair_style)");
+               "[rolling mu_r k_r eta_r] (or I J alone, with the law given to pair_style, or "
+               "I J mix)");
   model = law;
   rolling = rolls;
   size_tables();
@@ -179,6 +184,31 @@ void PairSoftSphere::coeff(int narg, char **arg)
     for (int j = i; j < n; j++) setflag[i][j] = 1;
 }
 
+/* pair_coeff I J mix: the pairs of types I and J take the law the kernel's mixing rule makes
+ * from each type's own coefficients, as pairs not given their own do. For pair_style
+ * hybrid/overlay, under which LAMMPS mixes no pair: each cross pair is given to the style. */
+void PairSoftSphere::mix(const char *first, const char *second)
+{
+  size_tables();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, first, 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, second, 1, atom->ntypes, jlo, jhi, error);
+  const int n = atom->ntypes + 1;
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = (jlo > i ? jlo : i); j <= jhi; j++) {
+      if (i == j)
+        error->all(FLERR,
+                   "pair_coeff {} {} mix: type {} has nothing to mix with itself: give it its "
+                   "own (pair_coeff {} {} LAW ...)",
+                   first, second, i, i, i);
+      given[i * n + j] = given[j * n + i] = 0;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
 const ss_coefficients_f64 *PairSoftSphere::own(int t) const
 {
   const int n = atom->ntypes + 1;
@@ -192,7 +222,13 @@ void PairSoftSphere::init_style()
   SoftSphere::require_spheres(lmp, STYLE);
   if (model < 0) error->all(FLERR, "{}: no law given (pair_coeff)", STYLE);
   size_tables();
-  refresh(true);
+  // The pairs this style evaluates are known once LAMMPS has asked init_one for each (under
+  // pair_style hybrid, only for the pairs mapped to this style): the step is checked then, at
+  // setup. This table gives the history's size.
+  owned.assign(given.size(), 0);
+  make_table(SoftSphere::present(lmp, STYLE, atom->ntypes, atom->type, 1));
+  checked_lightest.clear();
+  pending = 1;
   const size_t values = ss_table_state_values_f64(table);
   size_history = values > 0 ? (int) values : 1;
   if (history_made && history_made != size_history)
@@ -204,10 +240,60 @@ void PairSoftSphere::init_style()
   history_made = size_history;
 }
 
+double PairSoftSphere::init_one(int i, int j)
+{
+  const int n = atom->ntypes + 1;
+  owned[i * n + j] = owned[j * n + i] = 1;
+  return PairGranHookeHistory::init_one(i, j);
+}
+
+void PairSoftSphere::setup()
+{
+  PairGranHookeHistory::setup();
+  refresh(true);
+  pending = 0;
+}
+
 void PairSoftSphere::reset_dt()
 {
   PairGranHookeHistory::reset_dt();
-  if (table) prepare(checked_lightest);
+  if (table && !pending) prepare(checked_lightest);
+}
+
+/* A table for the atoms present (its largest radius and smallest inertia), with every type
+ * pair's coefficients given, and the type pairs this style evaluates when not every pair
+ * (pair_style hybrid): the step is then checked for those alone, and the others refused. */
+void PairSoftSphere::make_table(const SoftSphere::Present &now)
+{
+  const bool inertia = rolling > 0;
+  ss_table_free_f64(table);
+  table = nullptr;
+  // The largest pair of spheres has R* = R / 2.
+  table = new_table(atom->ntypes, 0.5 * now.table_radius(), inertia ? now.table_inertia() : 1.0);
+  built_radius = now.largest_radius;
+  built_inertia = now.table_inertia();
+  const int n = atom->ntypes + 1;
+  std::vector<uint32_t> pairs;
+  bool every = true;
+  for (int i = 1; i < n; i++)
+    for (int j = i; j < n; j++) {
+      if (owned.size() == given.size() && owned[i * n + j]) {
+        pairs.push_back((uint32_t) (i - 1));
+        pairs.push_back((uint32_t) (j - 1));
+      } else
+        every = false;
+      if (!given[i * n + j]) continue;
+      int parameter = SS_PARAMETER_NONE;
+      const int code = ss_table_set_f64(table, i - 1, j - 1, &coefficients[i * n + j], &parameter);
+      if (code != SS_OK)
+        error->all(FLERR, "pair_coeff {} {}: {} {}", i, j,
+                   SoftSphere::parameter_name(parameter, model),
+                   SoftSphere::parameter_error(code));
+    }
+  // Before init_one has named any pair (init_style), every pair.
+  if (!every && !pairs.empty() &&
+      ss_table_set_pairs_f64(table, pairs.data(), pairs.size() / 2) != SS_OK)
+    error->all(FLERR, "{}: the kernel refused the type pairs this style evaluates", STYLE);
 }
 
 /* Makes the table for the atoms present (remade when asked, or when atoms larger or of
@@ -218,26 +304,8 @@ void PairSoftSphere::reset_dt()
 void PairSoftSphere::refresh(bool remake)
 {
   const SoftSphere::Present now = SoftSphere::present(lmp, STYLE, atom->ntypes, atom->type, 1);
-  const bool inertia = rolling > 0;
-  if (remake || table == nullptr || now.outgrows(built_radius, built_inertia, inertia)) {
-    ss_table_free_f64(table);
-    table = nullptr;
-    // The largest pair of spheres has R* = R / 2.
-    table = new_table(atom->ntypes, 0.5 * now.table_radius(), inertia ? now.table_inertia() : 1.0);
-    built_radius = now.largest_radius;
-    built_inertia = now.table_inertia();
-    const int n = atom->ntypes + 1;
-    for (int i = 1; i < n; i++)
-      for (int j = i; j < n; j++) {
-        if (!given[i * n + j]) continue;
-        int parameter = SS_PARAMETER_NONE;
-        const int code =
-            ss_table_set_f64(table, i - 1, j - 1, &coefficients[i * n + j], &parameter);
-        if (code != SS_OK)
-          error->all(FLERR, "pair_coeff {} {}: {} {}", i, j,
-                     SoftSphere::parameter_name(parameter, model),
-                     SoftSphere::parameter_error(code));
-      }
+  if (remake || table == nullptr || now.outgrows(built_radius, built_inertia, rolling > 0)) {
+    make_table(now);
     checked_lightest.clear();
   }
   if (now.lightest != checked_lightest) prepare(now.lightest);
@@ -282,7 +350,12 @@ void PairSoftSphere::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   // Atoms arrive (fix pour, deposit) on the steps the lists are rebuilt: the table and the
   // step are checked again for them there.
-  if (neighbor->ago == 0 && !update->setupflag) refresh(false);
+  // A run that skipped setup (rerun) checks the step here.
+  if (pending) {
+    refresh(true);
+    pending = 0;
+  } else if (neighbor->ago == 0 && !update->setupflag)
+    refresh(false);
   // The setup evaluation (before the first step) gives forces without advancing the history.
   const int advance = update->setupflag ? 0 : 1;
 

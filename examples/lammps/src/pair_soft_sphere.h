@@ -22,6 +22,7 @@
 
 #include "pair_gran_hooke_history.h"
 #include "soft_sphere.h"
+#include "soft_sphere_law.h"
 
 #include <vector>
 
@@ -35,6 +36,8 @@ class PairSoftSphere : public PairGranHookeHistory {
   void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
+  double init_one(int, int) override;
+  void setup() override;
   void reset_dt() override;
   double single(int, int, int, int, double, double, double, double &) override;
   void transfer_history(double *, double *) override;
@@ -60,6 +63,8 @@ class PairSoftSphere : public PairGranHookeHistory {
   int warned_inaccurate;               // the coarse step's first inaccurate contacts reported
   std::vector<ss_coefficients_f64> coefficients;    // (ntypes + 1)^2, by type pair
   std::vector<int> given;                           // whether a type pair was given its own
+  std::vector<int> owned;              // (ntypes + 1)^2: the type pairs this style evaluates
+  int pending;                         // owned pairs known only after init_one: check at setup
   int history_made;                    // the history size the history fix was made with
   ss_table_f64 *table;
   double built_radius;                 // the largest radius the table was made for (0: no atoms)
@@ -69,6 +74,8 @@ class PairSoftSphere : public PairGranHookeHistory {
 
   void size_tables();
   ss_table_f64 *new_table(int materials, double largest_effective_radius, double inertia);
+  void mix(const char *first, const char *second);
+  void make_table(const SoftSphere::Present &now);
   void refresh(bool remake);
   void prepare(const std::vector<double> &lightest);
 };
