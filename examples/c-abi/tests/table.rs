@@ -991,6 +991,25 @@ fn a_table_evaluates_only_the_pairs_it_is_given() {
     // Not with material 2 absent.
     assert_eq!(prepare(table, [1e-5, 1e-5, 0.0]).0, SS_OK);
 
+    // Every material present is checked against the walls, whichever pairs the table
+    // evaluates: a wall of the stiff material 2 against material 0 (k sqrt(1e4 1e11)) at
+    // its lightest atom's mass.
+    assert_eq!(set(&[0, 0]), SS_OK);
+    assert_eq!(prepare(table, [1e-6, 0.0, 0.0]).0, SS_OK);
+    // SAFETY: valid pointers.
+    assert_eq!(
+        unsafe { ss_table_set_walls_f64(table, [2].as_ptr(), 1) },
+        SS_OK
+    );
+    let (code, refused) = prepare(table, [1e-6, 0.0, 0.0]);
+    assert_eq!(
+        (code, refused.materials),
+        (SS_ERR_INACCURATE_TIME_STEP, [0, 2])
+    );
+    // SAFETY: valid pointers.
+    assert_eq!(unsafe { ss_table_set_walls_f64(table, null(), 0) }, SS_OK);
+    assert_eq!(set(&[0, 0, 2, 2]), SS_OK);
+
     // Bad input changes nothing: an id past the table, a null table, null ids, a count past
     // memory. A table whose pairs change is prepared again before it evaluates.
     // SAFETY: valid pointers, or null where the test says.
