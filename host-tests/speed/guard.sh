@@ -27,7 +27,9 @@ bin="target/release"
 "$bin/scene_bench" --steps 1 --repeat 1 > /dev/null 2>&1
 
 # count NAME UNITS_PATTERN TOGGLE COMMAND...: runs COMMAND under callgrind, counting inside the
-# functions matching TOGGLE; prints "NAME own libc units".
+# functions matching TOGGLE; prints "NAME own libc units". Each TOGGLE ends with the function's
+# own name: a closure inside it (`...::evaluate_with::{{closure}}`) would also match a pattern
+# ending in `*`, and entering it would toggle the count off for whatever it calls.
 count() {
   local name="$1" units="$2" toggle="$3"
   shift 3
@@ -70,13 +72,13 @@ PY
 
 results="$work/results.txt"
 {
-  count contact_linear_aa 'contacts evaluated: (\d+)' '*contact_count::measured*' \
+  count contact_linear_aa 'contacts evaluated: (\d+)' '*contact_count::measured' \
     "$bin/contact_count" linear-aa 20
-  count contact_hertz_aa 'contacts evaluated: (\d+)' '*contact_count::measured*' \
+  count contact_hertz_aa 'contacts evaluated: (\d+)' '*contact_count::measured' \
     "$bin/contact_count" hertz-aa 20
-  count scene_pair_phase 'of (\d+) pair contact-steps' '*MaterialTable*evaluate_with*' \
+  count scene_pair_phase 'of (\d+) pair contact-steps' '*MaterialTable*>::evaluate_with' \
     "$bin/scene_bench" --steps 100 --repeat 1
-  count scene_step 'of (\d+) pair contact-steps' '*Scene*step_on*' \
+  count scene_step 'of (\d+) pair contact-steps' '*Scene*>::step_on' \
     "$bin/scene_bench" --steps 100 --repeat 1
 } > "$results"
 

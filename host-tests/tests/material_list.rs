@@ -10,8 +10,9 @@ use soft_sphere::executor::{Executor, Serial};
 use soft_sphere::{
     Backup, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing, Interaction,
     LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput, ListStats, Material,
-    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, PairLoad, Parameter, ParameterError,
-    Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall, effective_mass,
+    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad, Parameter,
+    ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
+    effective_mass,
 };
 
 type Linear = LinearAA<f64>;
@@ -1193,6 +1194,57 @@ fn first_refused_one_at_a_time(
 /// checked: whichever failure it meets first, it names the one the one-contact path meets first
 /// in list order; a chunk whose results are finite but whose sum overflows stands, with the
 /// one-contact path's bits.
+/// A law that keeps no state (Model C: the state is `()`, always finite) is tested on its
+/// forces alone: a contact that overflows is refused by the chunk's probe, nothing changed.
+#[test]
+fn a_contact_of_a_law_without_state_is_refused_on_its_forces() {
+    let t = MaterialTable::<soft_sphere::ContactLaw<f64, _, ModelC<f64>>, 3>::mixed(
+        &LinearMixing::new(ModelC),
+        &[glass(), rubber(), steel()],
+    )
+    .unwrap();
+    let mut m = Mixture::new(60, 5);
+    let dt = t.coarse_time_step(1.0e-6, &m.arrays(), &[]).unwrap();
+    let touching = |m: &Mixture, k: usize| {
+        let [i, j] = m.pairs[k].map(|x| x as usize);
+        let reach = m.radius[i] + m.radius[j];
+        (m.position[j] - m.position[i]).norm_squared() < reach * reach
+    };
+    let k = (0..m.pairs.len()).find(|&k| touching(&m, k)).unwrap();
+    let [i, j] = m.pairs[k].map(|x| x as usize);
+    // The pair meets at +-1.7e308 m/s: its dashpot force overflows.
+    m.velocity[i].x = 1.7e308;
+    m.velocity[j].x = -1.7e308;
+    let n = m.position.len();
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut states = vec![(); m.pairs.len()];
+    let mut saved = (vec![(); m.pairs.len()], vec![Vec3::ZERO; 2 * n]);
+    let list = ContactList {
+        pairs: &m.pairs,
+        shifts: &[],
+        pair_states: &mut states,
+        walls: &[],
+        wall_states: &mut [],
+    };
+    let out = ListOutput {
+        force: &mut force,
+        torque: &mut torque,
+        backup: Backup {
+            states: &mut saved.0,
+            loads: &mut saved.1,
+        },
+        records: None,
+    };
+    assert_eq!(
+        t.evaluate(dt, &m.arrays(), list, out),
+        Err(ListError::Pair {
+            pair: k,
+            error: ContactError::NonFiniteResult
+        })
+    );
+    assert!(force.iter().chain(&torque).all(|v| *v == Vec3::ZERO));
+}
+
 #[test]
 fn a_chunk_tested_at_once_names_the_first_refused_pair_in_list_order() {
     let t = table();

@@ -177,6 +177,22 @@ pub(crate) fn separated_frame<F: Float>(
     Ok(Some(separation.frame_with(roots(), i, j, lever_arm)))
 }
 
+/// The contact frame of a pair the list seam sifted for evaluation
+/// ([`Separation::needs_evaluation`]: overlapping or coincident), so only the coincident-centre
+/// test remains; `roots` as for [`separated_frame`].
+#[inline(always)]
+pub(crate) fn sifted_frame<F: Float>(
+    (i, j): (&Sphere<F>, &Sphere<F>),
+    separation: &Separation<F>,
+    roots: Roots<F>,
+    lever_arm: LeverArm,
+) -> Result<ContactFrame<F>, ContactError> {
+    if separation.coincident() {
+        return Err(ContactError::CoincidentCentres);
+    }
+    Ok(separation.frame_with(roots, i, j, lever_arm))
+}
+
 /// The contact between checked spheres i and j (see [`crate::checked::check`]), `None` when they
 /// do not overlap; only the coincident-centre test remains to be made.
 #[inline(always)]

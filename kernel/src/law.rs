@@ -800,14 +800,15 @@ where
         state: &mut Ro::State<T::State>,
         _: sealed::Deferred,
     ) -> Result<Interaction<F>, ContactError> {
-        let frame = geometry::separated_frame(
+        // Sifted pairs overlap unless coincident: no second test of apart.
+        let frame = geometry::sifted_frame(
             (i, j),
             &sifted.separation,
-            || sifted.roots,
+            sifted.roots,
             bound.law.lever_arm,
         )?;
         let turned = Some(sifted.turned);
-        bound_frame::<_, _, _, _, _, _, false>(bound, (i, j), frame, (state, turned))
+        bound_frame::<_, _, _, _, _, _, false>(bound, (i, j), Some(frame), (state, turned))
     }
 
     #[inline(always)]

@@ -683,11 +683,35 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
 /// [`PairLoads`](crate::spread::PairLoads) (kept per pair, added in list order after the
 /// threads).
 pub(crate) trait Commit<F> {
-    /// Places `first..first + len` are about to be evaluated: apart until committed.
-    fn begin_chunk(&mut self, first: usize, len: usize);
+    /// Places `first..first + len` are about to be evaluated: apart until committed. Returns the
+    /// running totals the chunk's contacts are counted on.
+    fn begin_chunk(&mut self, first: usize, len: usize) -> Tally<F>;
 
-    /// Pair `[i, j]`, the `k`-th contact of the list, touching with `c`.
+    /// Pair `[i, j]`, the `k`-th contact of the list, touching with `c`: its loads.
     fn pair(&mut self, k: usize, pair: [usize; 2], c: &ContactForces<F>);
+
+    /// The chunk's contacts are committed and counted on `tally`.
+    fn end_chunk(&mut self, tally: Tally<F>);
+}
+
+/// The running totals of the touching pairs, counted in list order in a chunk's own local
+/// value rather than through the engine's arrays' owner, which the compiler cannot keep in
+/// registers across the stores of the forces.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Tally<F> {
+    contacts: usize,
+    sliding: usize,
+    overlap_sum: F,
+}
+
+impl<F: Float> Tally<F> {
+    /// One more touching pair of this overlap, sliding or not.
+    #[inline(always)]
+    pub(crate) fn count(&mut self, overlap: F, sliding: bool) {
+        self.contacts += 1;
+        self.sliding += usize::from(sliding);
+        self.overlap_sum += overlap;
+    }
 }
 
 /// Where the contacts' outcomes go, in list order.
@@ -700,38 +724,59 @@ pub(crate) struct Sink<'o, F> {
 
 impl<F: Float> Commit<F> for Sink<'_, F> {
     #[inline(always)]
-    fn begin_chunk(&mut self, first: usize, len: usize) {
+    fn begin_chunk(&mut self, first: usize, len: usize) -> Tally<F> {
         if let Some(records) = self.records.as_deref_mut() {
             records[first..first + len].fill(Interaction::Apart);
+        }
+        Tally {
+            contacts: self.stats.pair_contacts,
+            sliding: self.stats.sliding_contacts,
+            overlap_sum: self.stats.overlap_sum,
         }
     }
 
     #[inline(always)]
     fn pair(&mut self, k: usize, pair: [usize; 2], c: &ContactForces<F>) {
-        let load = (c.force_on_j(), c.torque_on_i, c.torque_on_j);
-        self.add_pair(pair, load, (c.overlap, c.sliding));
+        self.add_loads(pair, (c.force_on_j(), c.torque_on_i, c.torque_on_j));
         self.record(k, Interaction::Touching(*c));
+    }
+
+    #[inline(always)]
+    fn end_chunk(&mut self, tally: Tally<F>) {
+        self.stats.pair_contacts = tally.contacts;
+        self.stats.sliding_contacts = tally.sliding;
+        self.stats.overlap_sum = tally.overlap_sum;
     }
 }
 
 impl<F: Float> Sink<'_, F> {
     /// A touching pair's force on j and torques on i and j added onto its spheres, and counted:
-    /// the one place where a pair's loads meet the engine's arrays, whichever thread evaluated
-    /// it.
+    /// the loads of a pair another thread evaluated, in list order.
     #[inline(always)]
     pub(crate) fn add_pair(
         &mut self,
+        pair: [usize; 2],
+        loads: (Vec3<F>, Vec3<F>, Vec3<F>),
+        (overlap, sliding): (F, bool),
+    ) {
+        self.add_loads(pair, loads);
+        self.stats.pair_contacts += 1;
+        self.stats.sliding_contacts += usize::from(sliding);
+        self.stats.overlap_sum += overlap;
+    }
+
+    /// A touching pair's force on j and torques on i and j added onto its spheres: the one
+    /// place where a pair's loads meet the engine's arrays, whichever thread evaluated it.
+    #[inline(always)]
+    fn add_loads(
+        &mut self,
         [i, j]: [usize; 2],
         (on_j, torque_on_i, torque_on_j): (Vec3<F>, Vec3<F>, Vec3<F>),
-        (overlap, sliding): (F, bool),
     ) {
         self.force[i] -= on_j;
         self.torque[i] += torque_on_i;
         self.force[j] += on_j;
         self.torque[j] += torque_on_j;
-        self.stats.pair_contacts += 1;
-        self.stats.sliding_contacts += usize::from(sliding);
-        self.stats.overlap_sum += overlap;
     }
 
     /// Sphere `sphere`, the `k`-th contact of the list, touching a wall with `c`.
@@ -777,6 +822,7 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut impl Commit<L::Float>,
 ) -> Result<(), (ListError, usize)> {
+    let spheres = &spheres.evened();
     let mut staged = Staged::<L::Float, L::State>::new();
     let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
     for (c, ((chunk, states), saved)) in chunks.zip(saved.chunks_mut(SIFT)).enumerate() {
@@ -791,7 +837,7 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
         let states = (&mut *states, &*saved);
         let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
         let found = staged.sifts.sift(spheres, (chunk, shifts));
-        sink.begin_chunk(first, chunk.len());
+        let mut tally = sink.begin_chunk(first, chunk.len());
         let failed = if BLOCKS {
             let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
             if let (None, Some(stage)) = (failed, &staged.blocks) {
@@ -799,7 +845,9 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
                     let k = usize::from(k);
                     if stage.touches[k] {
                         let pair = chunk[k].map(|x| x as usize);
-                        sink.pair(first + k, pair, &stage.forces[k]);
+                        let forces = &stage.forces[k];
+                        sink.pair(first + k, pair, forces);
+                        tally.count(forces.overlap, forces.sliding);
                     }
                 }
             }
@@ -810,9 +858,10 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
                 (chunk, shifts),
                 states,
                 found,
-                (bound, sink, first),
+                (bound, sink, first, &mut tally),
             )
         };
+        sink.end_chunk(tally);
         if let Some((k, error)) = failed {
             let pair = first + k;
             return Err((ListError::Pair { pair, error }, local + chunk.len()));
@@ -926,12 +975,15 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
         (states, saved): (&mut [S], &[S]),
         found: usize,
-        (bound, sink, first): (
+        (bound, sink, first, tally): (
             &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
             &mut impl Commit<F>,
             usize,
+            &mut Tally<F>,
         ),
     ) -> Option<(usize, ContactError)> {
+        // Counted in a local copy, which stays in registers across the stores of the loads.
+        let mut counted = *tally;
         L::sifted_roots(&mut self.sifts, found, saved, Deferred(()));
         let mut probe = F::ZERO;
         let mut finite_states = true;
@@ -950,6 +1002,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
                     probe += forces.finite_probe();
                     finite_states &= state.is_finite();
                     sink.pair(first + k, [i, j], &forces);
+                    counted.count(forces.overlap, forces.sliding);
                 }
                 Ok(Interaction::Apart) => {}
                 Err(error) => {
@@ -960,6 +1013,7 @@ impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
             }
             states[k] = state;
         }
+        *tally = counted;
         if probe.is_finite() && finite_states {
             return None;
         }

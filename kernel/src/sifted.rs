@@ -64,12 +64,29 @@ impl<F: Float> Sifts<F> {
         spheres: &impl Spheres<F>,
         (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
     ) -> usize {
+        // A loop for each case, so that neither tests for a shift at every pair (no shifts
+        // add zero, as `shift` gives).
+        if shifts.is_empty() {
+            self.sift_shifted(spheres, chunk, core::iter::repeat(Vec3::ZERO))
+        } else {
+            self.sift_shifted(spheres, chunk, shifts.iter().copied())
+        }
+    }
+
+    /// [`Sifts::sift`] with each pair's shift from `shifts`.
+    #[inline(always)]
+    fn sift_shifted(
+        &mut self,
+        spheres: &impl Spheres<F>,
+        chunk: &[[u32; 2]],
+        shifts: impl Iterator<Item = Vec3<F>>,
+    ) -> usize {
         let mut found = 0;
-        for (k, &[i, j]) in chunk.iter().enumerate() {
+        for (k, (&[i, j], shift)) in chunk.iter().zip(shifts).enumerate() {
             let (i, j) = (i as usize, j as usize);
             let separation = Separation::between(
                 (spheres.position(i), spheres.radius(i)),
-                (spheres.position(j) + shift(shifts, k), spheres.radius(j)),
+                (spheres.position(j) + shift, spheres.radius(j)),
             );
             let evaluate = separation.needs_evaluation();
             // Written at every pair, kept by counting only those that are evaluated.

@@ -10,7 +10,12 @@ use crate::vector::Vec3;
 
 pub(crate) mod sealed {
     /// Only the kernel's two layouts are [`Spheres`](super::Spheres).
-    pub trait Sealed {}
+    pub trait Sealed: Sized {
+        /// The same spheres with every array cut to the spheres' count (their lengths are
+        /// checked equal first, so no cut fails): the compiler then tests an index once for
+        /// all the arrays it reads.
+        fn evened(&self) -> Self;
+    }
 }
 
 /// The spheres a list evaluation reads, in either layout. Sealed: [`SphereArrays`] and
@@ -78,8 +83,31 @@ pub struct SphereSlice<'a, F> {
     pub material: &'a [u32],
 }
 
-impl<F> sealed::Sealed for SphereArrays<'_, F> {}
-impl<F> sealed::Sealed for SphereSlice<'_, F> {}
+impl<F> sealed::Sealed for SphereArrays<'_, F> {
+    #[inline(always)]
+    fn evened(&self) -> Self {
+        let n = self.position.len();
+        Self {
+            position: self.position,
+            velocity: &self.velocity[..n],
+            angular_velocity: &self.angular_velocity[..n],
+            radius: &self.radius[..n],
+            mass: &self.mass[..n],
+            material: &self.material[..n],
+        }
+    }
+}
+
+impl<F> sealed::Sealed for SphereSlice<'_, F> {
+    #[inline(always)]
+    fn evened(&self) -> Self {
+        let n = self.spheres.len();
+        Self {
+            spheres: self.spheres,
+            material: &self.material[..n],
+        }
+    }
+}
 
 impl<F: Float> Spheres<F> for SphereArrays<'_, F> {
     #[inline(always)]

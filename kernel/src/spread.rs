@@ -8,7 +8,7 @@ use crate::engine::{BoundLaw, Law};
 use crate::executor::{Executor, MAX_PIECES, piece_length};
 use crate::float::Float;
 use crate::law::{ContactForces, Interaction};
-use crate::list::{Commit, ListError, SIFT, Sink, evaluate_pairs};
+use crate::list::{Commit, ListError, SIFT, Sink, Tally, evaluate_pairs};
 use crate::spheres::Spheres;
 use crate::vector::Vec3;
 
@@ -39,12 +39,17 @@ pub(crate) struct PairLoads<'o, F> {
 
 impl<F: Float> Commit<F> for PairLoads<'_, F> {
     #[inline(always)]
-    fn begin_chunk(&mut self, first: usize, len: usize) {
+    fn begin_chunk(&mut self, first: usize, len: usize) -> Tally<F> {
         if let Some(records) = self.records.as_deref_mut() {
             let local = first - self.offset;
             records[local..local + len].fill(Interaction::Apart);
         }
+        // The totals are counted as the loads are added in list order, after the threads.
+        Tally::default()
     }
+
+    #[inline(always)]
+    fn end_chunk(&mut self, _: Tally<F>) {}
 
     #[inline(always)]
     fn pair(&mut self, k: usize, [i, j]: [usize; 2], c: &ContactForces<F>) {
