@@ -20,7 +20,9 @@
 #   7. decks that start empty (fix pour of three Hertz materials onto a wall fix, 1 and 2 ranks),
 #      the step checked when the atoms arrive; atoms without radius and mass refused; walls of
 #      their own material, each atom type meeting the wall as it meets a large sphere of the
-#      wall's material; pair_style hybrid beside gran/hooke/history.
+#      wall's material; pair_style hybrid beside gran/hooke/history (soft/sphere given all
+#      types, or its own types only) and hybrid/overlay with 'mix'; walls that shear and
+#      wiggle, beside fix wall/gran, across a restart.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
