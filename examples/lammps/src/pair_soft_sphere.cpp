@@ -243,6 +243,8 @@ void PairSoftSphere::init_style()
 double PairSoftSphere::init_one(int i, int j)
 {
   const int n = atom->ntypes + 1;
+  // Sized by init_style; a caller that asks before (pair_write) finds it sized here.
+  if (owned.size() != (size_t) (n * n)) owned.assign((size_t) (n * n), 0);
   owned[i * n + j] = owned[j * n + i] = 1;
   return PairGranHookeHistory::init_one(i, j);
 }
