@@ -920,6 +920,18 @@ fn next_reaching<F: Float, S: Default>(
     from: usize,
 ) -> Option<usize> {
     let count = walls.len();
+    if let [one] = walls {
+        // One wall (a floor): its plane read once, a place per sphere.
+        let states = states.get_mut(from..).unwrap_or_default();
+        let places = (from..spheres.len()).zip(states);
+        for (k, state) in places {
+            if reaches_wall(spheres.position(k), spheres.radius(k), &one.wall) {
+                return Some(k);
+            }
+            *state = S::default();
+        }
+        return None;
+    }
     let (mut k, mut w) = (from / count, from % count);
     while k < spheres.len() {
         let (position, radius) = (spheres.position(k), spheres.radius(k));
