@@ -5,9 +5,9 @@
 
 use host_tests::random::Xorshift;
 use soft_sphere::{
-    Backup, CheckedSphere, ContactList, Interaction, LinearMaterial, LinearMixing, ListArray,
-    ListError, ListOutput, MaterialTable, ModelAA, Route, Sphere, SphereArrays, SphereSlice,
-    Spheres, SpringDisplacement, TimeStep, Vec3,
+    Backup, CheckedPairs, CheckedSphere, ContactList, Interaction, LinearMaterial, LinearMixing,
+    ListArray, ListError, ListOutput, MaterialTable, ModelAA, Route, Sphere, SphereArrays,
+    SphereSlice, Spheres, SpringDisplacement, TimeStep, Vec3,
 };
 
 const RADIUS: f64 = 0.5e-3;
@@ -127,8 +127,7 @@ fn evaluate(
         dt,
         spheres,
         ContactList {
-            pairs,
-            shifts,
+            pairs: CheckedPairs::new(pairs, shifts, n)?,
             pair_states: &mut out.states,
             walls: &[],
             wall_states: &mut [],

@@ -6,10 +6,10 @@
 
 use host_tests::random::Xorshift;
 use soft_sphere::{
-    Backup, CheckedSphere, ContactLaw, ContactList, ElasticPlasticRolling, Float, Hertz,
-    HertzImpact, Interaction, Law, LinearSpringDashpot, ListOutput, MaterialTable, MindlinAA,
-    MindlinAALuding, MindlinParameters, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere,
-    SphereArrays, Stateless, Std, TangentialParameters, Vec3, effective_mass,
+    Backup, CheckedPairs, CheckedSphere, ContactLaw, ContactList, ElasticPlasticRolling, Float,
+    Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot, ListOutput, MaterialTable,
+    MindlinAA, MindlinAALuding, MindlinParameters, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
+    Sphere, SphereArrays, Stateless, Std, TangentialParameters, Vec3, effective_mass,
 };
 
 const RADIUS: f64 = 1.0e-3;
@@ -149,8 +149,7 @@ where
     for step in 0..steps {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         let list = ContactList {
-            pairs: &p.pairs,
-            shifts: &p.shifts,
+            pairs: CheckedPairs::new(&p.pairs, &p.shifts, n).unwrap(),
             pair_states: &mut states,
             walls: &[],
             wall_states: &mut [],

@@ -8,11 +8,11 @@ use host_tests::scene::Threads;
 use proptest::prelude::*;
 use soft_sphere::executor::{Executor, Serial};
 use soft_sphere::{
-    Backup, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing, Interaction, Law,
-    LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput, ListStats, Material,
-    MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad, Parameter,
-    ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
-    effective_mass,
+    Backup, CheckedPairs, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
+    Interaction, Law, LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput,
+    ListStats, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad,
+    Parameter, ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3,
+    Wall, effective_mass,
 };
 
 type Linear = LinearAA<f64>;
@@ -330,8 +330,7 @@ fn mixture_bits(route: Route, wall_count: usize) {
     for step in 0..200 {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         let list = ContactList {
-            pairs: &m.pairs,
-            shifts: &[],
+            pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
             pair_states: &mut states,
             walls,
             wall_states: &mut wall_states,
@@ -456,8 +455,7 @@ fn evaluate_plain<L: Law<Float = f64>>(
         vec![Vec3::ZERO; 2 * n],
     );
     let list = ContactList {
-        pairs: &m.pairs,
-        shifts: &[],
+        pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
         pair_states: states,
         walls: &[],
         wall_states: &mut [],
@@ -503,6 +501,42 @@ fn the_routes_choose_blocks_as_documented() {
     assert!(!Route::Auto.uses_blocks::<LinearAA<f32>>());
 }
 
+/// An evaluation of pairs checked elsewhere, which must leave the caller's arrays as they were
+/// when it refuses.
+fn route_checked(
+    route: Route,
+    t: &MaterialTable<Linear, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    pairs: CheckedPairs<'_, f64>,
+    dt: soft_sphere::TimeStep<f64>,
+) -> Result<(), ListError> {
+    let n = arrays.len();
+    let mut states = vec![State::default(); pairs.len()];
+    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
+    let mut saved = (vec![State::default(); pairs.len()], vec![Vec3::ZERO; 2 * n]);
+    let list = ContactList {
+        pairs,
+        pair_states: &mut states,
+        walls: &[],
+        wall_states: &mut [],
+    };
+    let out = ListOutput {
+        force: &mut force,
+        torque: &mut torque,
+        backup: Backup {
+            states: &mut saved.0,
+            loads: &mut saved.1,
+        },
+        records: None,
+    };
+    let result = t.evaluate_by(route, dt, arrays, list, out);
+    if result.is_err() {
+        let zero = |v: &[Vec3<f64>]| v.iter().all(|x| *x == Vec3::ZERO);
+        assert!(zero(&force) && zero(&torque) && states.iter().all(|s| *s == State::default()));
+    }
+    result.map(|_| ())
+}
+
 fn try_route(
     route: Route,
     t: &MaterialTable<Linear, 3>,
@@ -528,13 +562,13 @@ fn try_route(
     let contacts = pairs.len() + n * walls.len();
     let mut records = vec![Interaction::Apart; contacts];
     let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
+    let pairs = CheckedPairs::new(pairs, &[], n)?;
     let result = t.evaluate_by(
         route,
         dt,
         arrays,
         ContactList {
             pairs,
-            shifts: &[],
             pair_states: &mut states,
             walls,
             wall_states: &mut wall_states,
@@ -633,8 +667,7 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             dt,
             &m.arrays(),
             ContactList {
-                pairs: &m.pairs,
-                shifts: &[],
+                pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
                 pair_states: &mut states[..p - usize::from(cut == 0)],
                 walls: &walls,
                 wall_states: &mut wall_states[..w - usize::from(cut == 1)],
@@ -740,6 +773,23 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         try_evaluate(&t, &m.arrays(), &pairs, &walls, dt),
         Err(ListError::PairIndex { pair: 3 })
     );
+    // Pairs checked for more spheres than the call gives are checked again against these; a
+    // list checked for fewer is not (its indices are inside these too).
+    let mut pairs = m.pairs.clone();
+    pairs[4] = [2, 19];
+    let few = Mixture::new(19, 3);
+    let few_dt = t.coarse_time_step(1.0e-6, &few.arrays(), &walls).unwrap();
+    let pair = pairs.iter().position(|p| p.contains(&19)).unwrap();
+    assert!(pair <= 4);
+    for route in ROUTES {
+        let checked = CheckedPairs::new(&pairs, &[], 20).unwrap();
+        assert_eq!(
+            route_checked(route, &t, &few.arrays(), checked, few_dt),
+            Err(ListError::PairIndex { pair })
+        );
+        let checked = CheckedPairs::new(&few.pairs, &[], 19).unwrap();
+        assert_eq!(route_checked(route, &t, &m.arrays(), checked, dt), Ok(()));
+    }
     // A contact refused: coincident centres, then an overflowing force, each with its pair.
     let mut pairs = m.pairs.clone();
     pairs[5] = [4, 4];
@@ -999,8 +1049,7 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
                 step,
                 &spheres,
                 ContactList {
-                    pairs: &pairs,
-                    shifts: &[],
+                    pairs: CheckedPairs::new(&pairs, &[], p.len()).unwrap(),
                     pair_states: &mut states,
                     walls: &[],
                     wall_states: &mut [],
@@ -1095,8 +1144,7 @@ fn an_empty_list_and_walls_alone_work() {
             dt,
             &arrays,
             ContactList {
-                pairs: &[],
-                shifts: &[],
+                pairs: CheckedPairs::empty(),
                 pair_states: &mut [],
                 walls: &walls,
                 wall_states: &mut wall_states,
@@ -1385,8 +1433,7 @@ fn evaluate_on<E: Executor>(
     let mut records = vec![Interaction::Apart; contacts];
     let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let list = ContactList {
-        pairs,
-        shifts: &[],
+        pairs: CheckedPairs::new(pairs, &[], n).unwrap(),
         pair_states: states,
         walls,
         wall_states,

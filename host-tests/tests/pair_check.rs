@@ -2,7 +2,7 @@
 //! every earlier one.
 
 use proptest::prelude::*;
-use soft_sphere::{ListArray, ListError, Vec3, check_pairs};
+use soft_sphere::{CheckedPairs, ListArray, ListError, PairList, Vec3, check_pairs};
 
 /// Whether entries `a` and `b` name one contact: the same two spheres through the same image,
 /// either way round (`[i, j]` shifted by `s` is `[j, i]` shifted by `-s`).
@@ -130,4 +130,106 @@ fn bad_lists_are_named_before_repeats() {
     assert_eq!(checked(&pairs, none, 8), Ok(()));
     let text = ListError::RepeatedPair { pair: 4, first: 1 }.to_string();
     assert!(text.contains("pair 4 repeats pair 1"), "{text}");
+}
+
+/// The first entry naming a sphere at or past `spheres`, then the first shift that is not
+/// finite: what a checked list may not hold.
+fn first_outside(pairs: &[[u32; 2]], shifts: &[Vec3<f64>], spheres: u32) -> Option<ListError> {
+    let index = pairs
+        .iter()
+        .position(|p| p[0] >= spheres || p[1] >= spheres);
+    let shift = shifts
+        .iter()
+        .position(|s| !(s.x.is_finite() && s.y.is_finite() && s.z.is_finite()));
+    index
+        .map(|pair| ListError::PairIndex { pair })
+        .or(shift.map(|pair| ListError::Shift { pair }))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn a_pair_list_holds_only_what_its_last_build_checked(
+        builds in prop::collection::vec(
+            (prop::collection::vec(((0u32..9, 0u32..9), -1i32..=2), 0..10), 0usize..12),
+            1..6,
+        ),
+    ) {
+        let (mut pairs, mut shifts) = ([[0; 2]; 8], [Vec3::<f64>::ZERO; 8]);
+        let mut list = PairList::new(&mut pairs, &mut shifts).unwrap();
+        prop_assert_eq!(list.capacity(), 8);
+        for (entries, count) in builds {
+            let wanted: Vec<[u32; 2]> = entries.iter().map(|((i, j), _)| [*i, *j]).collect();
+            // -1 marks a shift that is not finite.
+            let images: Vec<Vec3<f64>> = entries
+                .iter()
+                .map(|(_, s)| Vec3::new(if *s < 0 { f64::NAN } else { 0.01 * f64::from(*s) }, 0.0, 0.0))
+                .collect();
+            let built = list.rebuild(8, |p, s| {
+                let n = wanted.len().min(p.len());
+                p[..n].copy_from_slice(&wanted[..n]);
+                s[..n].copy_from_slice(&images[..n]);
+                count
+            });
+            let expected = if count > 8 {
+                Err(ListError::Length(ListArray::Pairs))
+            } else {
+                // Past what was written, the buffers hold an earlier build's pairs.
+                let (p, s) = list.buffers();
+                let (p, s) = (p[..count].to_vec(), s[..count].to_vec());
+                first_outside(&p, &s, 8).map_or(Ok(count), Err)
+            };
+            prop_assert_eq!(built, expected);
+            let checked = list.checked();
+            match built {
+                Ok(count) => {
+                    prop_assert_eq!(checked.len(), count);
+                    prop_assert_eq!(checked.spheres(), 8);
+                    prop_assert_eq!(checked.pairs(), &list.buffers().0[..count]);
+                    prop_assert_eq!(checked.shifts().len(), count);
+                    // What a build checked, a one-call check accepts.
+                    prop_assert!(CheckedPairs::new(checked.pairs(), checked.shifts(), 8).is_ok());
+                }
+                Err(_) => prop_assert!(checked.is_empty() && list.is_empty()),
+            }
+        }
+    }
+}
+
+#[test]
+fn a_pair_list_without_shifts_keeps_none_and_buffers_must_agree() {
+    let (mut pairs, mut shifts) = ([[0; 2]; 3], [Vec3::<f64>::ZERO; 2]);
+    assert_eq!(
+        PairList::new(&mut pairs, &mut shifts).err(),
+        Some(ListError::Length(ListArray::Shifts))
+    );
+    let mut list = PairList::<f64>::new(&mut pairs, &mut []).unwrap();
+    assert!(list.is_empty() && list.checked().is_empty());
+    assert_eq!(
+        list.rebuild(3, |p, s| {
+            assert!(s.is_empty());
+            p[..2].copy_from_slice(&[[0, 2], [1, 2]]);
+            2
+        }),
+        Ok(2)
+    );
+    let checked = list.checked();
+    assert_eq!(
+        (checked.pairs(), checked.shifts().len()),
+        (&[[0, 2], [1, 2]][..], 0)
+    );
+    // The same pairs are outside two spheres.
+    assert_eq!(
+        list.rebuild(2, |_, _| 2),
+        Err(ListError::PairIndex { pair: 0 })
+    );
+    assert!(list.is_empty());
+    // A one-call list: shifts none or one per pair.
+    let one = [Vec3::<f64>::ZERO];
+    assert_eq!(
+        CheckedPairs::new(&[[0, 1], [1, 2]], &one, 3).err(),
+        Some(ListError::Length(ListArray::Shifts))
+    );
+    assert!(CheckedPairs::<f64>::empty().is_empty());
 }

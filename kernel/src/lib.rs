@@ -264,7 +264,7 @@ pub use normal::{
     Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
     NormalOscillator,
 };
-pub use pair_check::check_pairs;
+pub use pair_check::{CheckedPairs, PairList, check_pairs};
 pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use spheres::{SphereArrays, SphereSlice, Spheres};

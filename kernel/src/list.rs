@@ -19,7 +19,7 @@ use crate::executor::{Executor, Serial};
 use crate::float::Float;
 use crate::geometry::reaches_wall;
 use crate::law::{ContactForces, Interaction};
-use crate::pair_check::check_places;
+use crate::pair_check::{CheckedPairs, check_places};
 pub(crate) use crate::sifted::SIFT;
 use crate::sifted::{Sifts, shift};
 use crate::spheres::Spheres;
@@ -72,11 +72,10 @@ pub struct MaterialWall<F> {
 /// The contacts of one evaluation and their per-contact states, owned by the engine.
 #[derive(Debug)]
 pub struct ContactList<'a, F, S> {
-    /// Sphere-sphere pairs, as indices into the spheres; `i` is body i.
-    pub pairs: &'a [[u32; 2]],
-    /// Empty, or one per pair: added to sphere `j`'s position for that pair (a periodic image,
-    /// as a cell list finds it); the forces still go to sphere `j`.
-    pub shifts: &'a [Vec3<F>],
+    /// Sphere-sphere pairs `[i, j]` (`i` is body i) and their periodic shifts, checked for
+    /// the spheres: by [`CheckedPairs::new`] for this call, or when the engine built its list
+    /// ([`PairList::checked`](crate::PairList::checked)).
+    pub pairs: CheckedPairs<'a, F>,
     /// One state per pair, kept beside the pairs from step to step.
     pub pair_states: &'a mut [S],
     /// The walls.
@@ -154,8 +153,10 @@ pub enum ListArray {
     Mass,
     /// [`SphereArrays::material`](crate::SphereArrays::material).
     Material,
-    /// [`ContactList::shifts`] (none, or one per pair).
+    /// A pair list's shifts (none, or one per pair: [`CheckedPairs::new`]).
     Shifts,
+    /// A pair list's pairs: no more than its buffers hold ([`PairList::rebuild`](crate::PairList::rebuild)).
+    Pairs,
     /// [`ContactList::pair_states`] (one per pair).
     PairStates,
     /// [`ContactList::wall_states`] (one per sphere and wall).
@@ -455,8 +456,8 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     ///
     /// ```
     /// use soft_sphere::{
-    ///     Backup, ContactList, LinearMaterial, LinearMixing, ListOutput, MaterialTable, ModelAA,
-    ///     SphereArrays, Vec3,
+    ///     Backup, CheckedPairs, ContactList, LinearMaterial, LinearMixing, ListOutput,
+    ///     MaterialTable, ModelAA, SphereArrays, Vec3,
     /// };
     ///
     /// let glass = LinearMaterial {
@@ -477,8 +478,10 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     ///
     /// let mut pair_states = [Default::default(); 2];
     /// let list = ContactList {
-    ///     pairs: &[[0, 1], [1, 2]], shifts: &[], pair_states: &mut pair_states,
-    ///     walls: &[], wall_states: &mut [],
+    ///     pairs: CheckedPairs::new(&[[0, 1], [1, 2]], &[], 3).unwrap(),
+    ///     pair_states: &mut pair_states,
+    ///     walls: &[],
+    ///     wall_states: &mut [],
     /// };
     /// let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
     /// let (mut saved_states, mut saved_loads) = ([Default::default(); 2], [Vec3::ZERO; 6]);
@@ -500,7 +503,9 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// [`ListError::Length`] for an array of the wrong length; [`ListError::Material`] /
     /// [`ListError::Sphere`] for the first bad sphere; [`ListError::Load`] for the first
     /// sphere whose force or torque is not finite as given; [`ListError::WallMaterial`];
-    /// [`ListError::PairIndex`] for the first pair past the arrays; [`ListError::Pair`] and
+    /// [`ListError::PairIndex`] for the first pair past the arrays when the pairs were checked
+    /// for more spheres than these (or [`ListError::Shift`]: a list checked for these spheres,
+    /// or fewer, is not checked again); [`ListError::Pair`] and
     /// [`ListError::Wall`] for the first refused contact, in list order.
     pub fn evaluate(
         &self,
@@ -567,16 +572,11 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     ) -> Result<ListStats<L::Float>, ListError> {
         let blocks = route.uses_blocks::<L>();
         let n = spheres.len();
-        let (pairs, shifts, walls) = (list.pairs, list.shifts, list.walls);
+        let (pairs, shifts, walls) = (list.pairs.pairs(), list.pairs.shifts(), list.walls);
         let contacts =
             ListOutput::<L::Float, L::State>::records_needed(pairs.len(), n, walls.len());
         let records = out.records.as_ref().map_or(contacts, |r| r.len());
         let lengths = [
-            (
-                shifts.len(),
-                if shifts.is_empty() { 0 } else { pairs.len() },
-                ListArray::Shifts,
-            ),
             (list.pair_states.len(), pairs.len(), ListArray::PairStates),
             (
                 list.wall_states.len(),
@@ -605,7 +605,11 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             return Err(ListError::Load { sphere });
         }
         check_walls::<_, MATERIALS>(walls)?;
-        check_places((pairs, shifts), n)?;
+        // Checked when the pairs were made, for as many spheres as these or fewer; a list
+        // checked for more is checked again against these.
+        if list.pairs.spheres() > n {
+            check_places((pairs, shifts), n)?;
+        }
         let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
         saved_walls.copy_from_slice(list.wall_states);
         let (saved_force, saved_torque) = out.backup.loads.split_at_mut(n);

@@ -3,8 +3,8 @@
 //! evaluated and scattered back, all or nothing.
 
 use soft_sphere::{
-    Backup, CheckedSphere, ContactList, Float, Interaction, Law, ListError, ListOutput, ListStats,
-    Mixing, Sphere, SphereArrays, Vec3, check_pairs,
+    Backup, CheckedPairs, CheckedSphere, ContactList, Float, Interaction, Law, ListError,
+    ListOutput, ListStats, Mixing, Sphere, SphereArrays, Vec3, check_pairs,
 };
 
 use crate::{
@@ -247,12 +247,15 @@ where
             mass: scalars(atoms.mass),
             material: &work.material,
         };
+        let pairs = match CheckedPairs::new(&work.pairs, &[], n) {
+            Ok(pairs) => pairs,
+            Err(error) => return list_code(error, &work.pairs, report),
+        };
         let outcome = table.evaluate(
             *step,
             &spheres,
             ContactList {
-                pairs: &work.pairs,
-                shifts: &[],
+                pairs,
                 pair_states: &mut work.states,
                 walls: &[],
                 wall_states: &mut [],
@@ -472,8 +475,7 @@ where
             *step,
             &spheres,
             ContactList {
-                pairs: &[],
-                shifts: &[],
+                pairs: CheckedPairs::empty(),
                 pair_states: &mut [],
                 walls: &work.walls,
                 wall_states: &mut work.states,

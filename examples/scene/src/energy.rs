@@ -97,10 +97,10 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         table: &MaterialTable<L, M>,
         dt: L::Float,
     ) {
-        let count = self.candidate_count;
+        let count = self.list.len();
         let mut sums = Sums::default();
         for k in 0..count {
-            let [i, j] = self.pairs[k].map(|x| x as usize);
+            let [i, j] = self.list.checked().pairs()[k].map(|x| x as usize);
             let (a, b) = (&self.spheres[i], &self.spheres[j]);
             let Some(law) = table.law(self.materials[i] as usize, self.materials[j] as usize)
             else {

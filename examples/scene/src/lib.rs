@@ -69,7 +69,8 @@ pub use walls::{NoWalls, WallSet};
 use core::marker::PhantomData;
 
 use soft_sphere::{
-    CheckedSphere, Float, Interaction, Law, MaterialTable, PairLoad, SphereSlice, TimeStep, Vec3,
+    CheckedSphere, Float, Interaction, Law, MaterialTable, PairList, PairLoad, SphereSlice,
+    TimeStep, Vec3,
 };
 
 use energy::Ledger;
@@ -142,8 +143,8 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
     materials: &'a [u32],
     cell_start: &'a mut [u32],
     cell_entries: &'a mut [u32],
-    pairs: &'a mut [[u32; 2]],
-    shifts: &'a mut [Vec3<L::Float>],
+    /// The Verlet list: pairs and periodic shifts, checked by the kernel at each build.
+    list: PairList<'a, L::Float>,
     force: &'a mut [Vec3<L::Float>],
     torque: &'a mut [Vec3<L::Float>],
     anchor: &'a mut [Vec3<L::Float>],
@@ -310,13 +311,14 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         let (anchor, saved_loads) = per_sphere.split_at_mut(n);
         let (pair_states, states) = b.states.split_at_mut(list);
         let (wall_states, saved_states) = states.split_at_mut(n * W::COUNT);
+        // The shifts were cut to the pairs' length.
+        let verlet = PairList::new(b.pairs, shifts).map_err(|_| SceneError::BufferLength)?;
         Ok(Self {
             spheres,
             materials,
             cell_start,
             cell_entries,
-            pairs: b.pairs,
-            shifts,
+            list: verlet,
             force,
             torque,
             anchor,
@@ -449,7 +451,8 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             for parking in self.parking.iter_mut() {
                 parking.clear();
             }
-            let stored = self.pairs.iter().zip(self.pair_states.iter());
+            // Read from the buffers, which before the first build hold a restart's history.
+            let stored = self.list.buffers().0.iter().zip(self.pair_states.iter());
             for (&[i, j], &state) in stored.take(old_count) {
                 // A relaxed state is what a new contact starts from: nothing to carry.
                 if state != relaxed {
@@ -461,22 +464,40 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         }
         self.grid
             .sort(self.spheres, self.cell_start, self.cell_entries);
-        let Ok(count) = self.grid.pairs(
-            self.spheres,
-            (self.cell_start, self.cell_entries),
-            self.skin,
-            (self.pairs, self.shifts),
-        ) else {
+        let (grid, spheres, skin) = (&self.grid, &*self.spheres, self.skin);
+        let cells = (&*self.cell_start, &*self.cell_entries);
+        let mut full = false;
+        let built = self.list.rebuild(spheres.len(), |pairs, shifts| {
+            grid.pairs(spheres, cells, skin, (pairs, shifts))
+                .unwrap_or_else(|()| {
+                    full = true;
+                    0
+                })
+        });
+        let count = match built {
+            Ok(count) if !full => count,
             // The list's pairs were overwritten up to its end: write the parked history back,
             // for the next attempt or for a scene over a larger list.
-            self.unpark(old_count);
-            return Err(StepError::ListFull);
+            Ok(_) => {
+                self.unpark(old_count);
+                return Err(StepError::ListFull);
+            }
+            // The grid names spheres of the scene only, with finite shifts.
+            Err(error) => {
+                self.unpark(old_count);
+                return Err(StepError::List(error));
+            }
         };
         self.candidate_count = count;
         if stores::<L::State>() {
             // Keep every state past the list relaxed (see `SceneBuffers`).
             self.pair_states[count..old_count.max(count)].fill(relaxed);
-            let listed = self.pairs.iter().zip(self.pair_states.iter_mut());
+            let listed = self
+                .list
+                .checked()
+                .pairs()
+                .iter()
+                .zip(self.pair_states.iter_mut());
             for (&[i, j], state) in listed.take(count) {
                 *state = self.parking[i as usize].find(j);
             }
@@ -494,18 +515,26 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// list is not current, so only its pairs and states are read) and relaxes the rest up to
     /// `old_count`. They fit: they were parked from the first `old_count` entries.
     fn unpark(&mut self, old_count: usize) {
+        self.records_current = false;
         if !stores::<L::State>() {
+            self.candidate_count = self.list.len();
             return;
         }
-        let mut count = 0;
-        for (i, parking) in self.parking.iter().enumerate() {
-            for (j, state) in parking.parked() {
-                self.pairs[count] = [i as u32, j];
-                self.shifts[count] = Vec3::ZERO;
-                self.pair_states[count] = state;
-                count += 1;
+        let (parking, states) = (&*self.parking, &mut *self.pair_states);
+        let written = self.list.rebuild(self.spheres.len(), |pairs, shifts| {
+            let mut count = 0;
+            for (i, parking) in parking.iter().enumerate() {
+                for (j, state) in parking.parked() {
+                    pairs[count] = [i as u32, j];
+                    shifts[count] = Vec3::ZERO;
+                    states[count] = state;
+                    count += 1;
+                }
             }
-        }
+            count
+        });
+        // Parked from the scene's own pairs: inside the spheres and the buffers.
+        let count = written.unwrap_or(0);
         self.pair_states[count..old_count.max(count)].fill(L::State::default());
         self.candidate_count = count;
     }

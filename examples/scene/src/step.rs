@@ -273,8 +273,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
             material: self.materials,
         };
         let list = ContactList {
-            pairs: &self.pairs[..count],
-            shifts: &self.shifts[..count],
+            pairs: self.list.checked(),
             pair_states: &mut self.pair_states[..count],
             walls: self.walls.walls(),
             wall_states: &mut *self.wall_states,
@@ -298,7 +297,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         let list_stats = input
             .table
             .evaluate_on((executor, loads), input.time_step, &spheres, list, out)
-            .map_err(|error| StepError::from_list(error, &self.pairs[..count]))?;
+            .map_err(|error| StepError::from_list(error, self.list.checked().pairs()))?;
         self.records_current = keep_records;
         let (saved_pairs, saved_walls) = self.saved_states[..contacts].split_at(count);
         if !commit {

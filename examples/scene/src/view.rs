@@ -33,7 +33,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// against walls; nothing when the scene keeps no records ([`crate::SceneBuffers::records`])
     /// or has not stepped.
     pub fn contacts(&self) -> impl Iterator<Item = ContactView<L::Float>> + '_ {
-        let count = self.candidate_count;
+        let count = self.list.len();
         let walls = W::COUNT;
         let recorded = if self.records.is_empty() || !self.records_current {
             0
@@ -48,7 +48,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     return None;
                 };
                 let bodies = if k < count {
-                    ContactBodies::Pair(self.pairs[k].map(|x| x as usize))
+                    ContactBodies::Pair(self.list.checked().pairs()[k].map(|x| x as usize))
                 } else {
                     let place = k - count;
                     ContactBodies::Wall {

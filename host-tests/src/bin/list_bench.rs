@@ -16,9 +16,9 @@ use std::time::Instant;
 
 use host_tests::random::Xorshift;
 use soft_sphere::{
-    Backup, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial, LinearMixing,
-    LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Route, Sphere, SphereArrays,
-    SpringDisplacement, Std, TimeStep, Vec3,
+    Backup, CheckedPairs, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial,
+    LinearMixing, LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Route, Sphere,
+    SphereArrays, SpringDisplacement, Std, TimeStep, Vec3,
 };
 
 type Vectorised = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>, Std>;
@@ -154,8 +154,7 @@ impl Seam {
         (force, torque): (&mut [Vec3<f64>], &mut [Vec3<f64>]),
     ) -> usize {
         let list = ContactList {
-            pairs,
-            shifts: &[],
+            pairs: CheckedPairs::new(pairs, &[], spheres.position.len()).unwrap(),
             pair_states: &mut self.states,
             walls: &[],
             wall_states: &mut [],
