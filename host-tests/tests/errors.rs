@@ -234,7 +234,50 @@ fn bad_sphere_inputs_get_their_error_and_change_nothing() {
         // Checking once refuses it the same way.
         assert_eq!(CheckedSphere::new(i), Err(expected));
         assert_eq!(CheckedSphere::try_from(i), Err(expected));
+        // A checked sphere given this motion refuses it and stays as it was; radius and mass
+        // are not the motion's, and stay as checked.
+        let mut moved = CheckedSphere::new(touching_pair().0).unwrap();
+        let before = moved;
+        let refused = moved.set_motion(i.position, i.velocity, i.angular_velocity);
+        let motion_spoilt =
+            !(i.position.is_finite() && i.velocity.is_finite() && i.angular_velocity.is_finite());
+        assert_eq!(refused.is_err(), motion_spoilt);
+        if motion_spoilt {
+            assert_eq!(refused, Err(ContactError::NonFiniteInput));
+            assert_eq!(moved, before);
+        } else {
+            assert_eq!((moved.radius, moved.mass), (before.radius, before.mass));
+        }
     }
+    // Every component of a motion is checked, and a finite one is taken whole.
+    let (i, _) = touching_pair();
+    for component in 0..9 {
+        let mut motion = [i.position, i.velocity, i.angular_velocity].map(|v| [v.x, v.y, v.z]);
+        motion[component / 3][component % 3] = f64::NAN;
+        let [p, v, w] = motion.map(|[x, y, z]| Vec3::new(x, y, z));
+        let mut checked = CheckedSphere::new(i).unwrap();
+        assert_eq!(
+            checked.set_motion(p, v, w),
+            Err(ContactError::NonFiniteInput)
+        );
+        assert_eq!(*checked, i);
+    }
+    let mut checked = CheckedSphere::new(i).unwrap();
+    let (p, v, w) = (
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(4.0, 5.0, 6.0),
+        Vec3::new(7.0, 8.0, 9.0),
+    );
+    checked.set_motion(p, v, w).unwrap();
+    assert_eq!(
+        *checked,
+        Sphere {
+            position: p,
+            velocity: v,
+            angular_velocity: w,
+            ..i
+        }
+    );
     // A valid sphere passes, reads as itself and gives itself back; an image moved past the
     // largest float is refused.
     let (i, _) = touching_pair();

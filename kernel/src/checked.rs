@@ -5,11 +5,12 @@ use core::ops::Deref;
 
 use crate::body::Sphere;
 use crate::error::ContactError;
-use crate::float::Float;
+use crate::float::{Float, all_finite};
 use crate::vector::Vec3;
 
 /// A [`Sphere`] whose fields are finite and whose radius and mass are positive. It can only be
-/// made by [`CheckedSphere::new`] and changed through [`CheckedSphere::update`], which check it, so
+/// made by [`CheckedSphere::new`] and changed through [`CheckedSphere::update`] and
+/// [`CheckedSphere::set_motion`], which check it, so
 /// every contact evaluated with it skips those checks (see [`ContactLaw::at`](crate::ContactLaw::at)).
 /// It reads as a [`Sphere`] through `Deref`.
 ///
@@ -53,6 +54,46 @@ impl<F: Float> CheckedSphere<F> {
         let returned = change(&mut next);
         *self = Self::new(next)?;
         Ok(returned)
+    }
+
+    /// Replaces the sphere's motion (its position, velocity and angular velocity), which is
+    /// all an integrator changes. Only those are checked: the radius and mass stay as they were
+    /// checked.
+    ///
+    /// ```
+    /// use soft_sphere::{CheckedSphere, ContactError, Sphere, Vec3};
+    ///
+    /// let sphere = Sphere::solid(Vec3::ZERO, 1.0e-3, 2500.0_f64);
+    /// let mut checked = CheckedSphere::new(sphere).unwrap();
+    /// let velocity = Vec3::new(0.0, 0.0, -0.1);
+    /// checked.set_motion(Vec3::new(0.0, 0.0, -1.0e-6), velocity, Vec3::ZERO).unwrap();
+    /// assert_eq!(checked.velocity, velocity);
+    /// let diverged = Vec3::new(f64::INFINITY, 0.0, 0.0);
+    /// assert_eq!(
+    ///     checked.set_motion(diverged, velocity, Vec3::ZERO),
+    ///     Err(ContactError::NonFiniteInput)
+    /// );
+    /// assert_eq!(checked.position, Vec3::new(0.0, 0.0, -1.0e-6));
+    /// ```
+    ///
+    /// # Errors
+    /// [`ContactError::NonFiniteInput`] when a component is not finite; the sphere is then
+    /// unchanged.
+    #[inline(always)]
+    pub fn set_motion(
+        &mut self,
+        position: Vec3<F>,
+        velocity: Vec3<F>,
+        angular_velocity: Vec3<F>,
+    ) -> Result<(), ContactError> {
+        let (p, v, w) = (position, velocity, angular_velocity);
+        if !all_finite([p.x, p.y, p.z, v.x, v.y, v.z, w.x, w.y, w.z]) {
+            return Err(ContactError::NonFiniteInput);
+        }
+        self.0.position = position;
+        self.0.velocity = velocity;
+        self.0.angular_velocity = angular_velocity;
+        Ok(())
     }
 
     /// The same sphere moved by `offset` (a periodic image, for example).

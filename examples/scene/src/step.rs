@@ -177,47 +177,51 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         let half_kick = kick * <L::Float as Float>::HALF;
         // The energy account needs the kicks' work; a scene without records skips it.
         let book = !self.records.is_empty();
+        let (periodic_x, periodic_y) = (domain.periodic_x, domain.periodic_y);
         executor.for_each_mut(&mut pieces, |piece| {
             let Some(piece) = piece else { return };
             let mut memo = KickMemo::new(kick);
-            for (k, checked) in piece.spheres.iter_mut().enumerate() {
-                let (force, torque, anchor) = (piece.force[k], piece.torque[k], piece.anchor[k]);
-                let moved = checked.update(|sphere| {
-                    let (velocity, spin) = (sphere.velocity, sphere.angular_velocity);
-                    memo.get(sphere)
-                        .apply(sphere, force + gravity * sphere.mass, torque);
-                    // Each force's work as the kick applies it: F . (v + v') h / 2.
-                    let work = if book {
-                        let mean = (velocity + sphere.velocity) * half_kick;
-                        let mean_spin = (spin + sphere.angular_velocity) * half_kick;
-                        (
-                            force.dot(mean) + torque.dot(mean_spin),
-                            gravity.dot(mean) * sphere.mass,
-                        )
-                    } else {
-                        (L::Float::ZERO, L::Float::ZERO)
-                    };
-                    let Some(dt) = drift else {
-                        return (false, work);
-                    };
-                    sphere.position += sphere.velocity * dt;
+            let loads = piece.force.iter().zip(piece.torque).zip(piece.anchor);
+            for (k, (checked, ((&force, &torque), &anchor))) in
+                piece.spheres.iter_mut().zip(loads).enumerate()
+            {
+                let mut sphere = **checked;
+                let (velocity, spin) = (sphere.velocity, sphere.angular_velocity);
+                let pull = force + gravity * sphere.mass;
+                memo.get(&sphere).apply(&mut sphere, pull, torque);
+                // Each force's work as the kick applies it: F . (v + v') h / 2.
+                let (contact, gravity_work) = if book {
+                    let mean = (velocity + sphere.velocity) * half_kick;
+                    let mean_spin = (spin + sphere.angular_velocity) * half_kick;
+                    (
+                        force.dot(mean) + torque.dot(mean_spin),
+                        gravity.dot(mean) * sphere.mass,
+                    )
+                } else {
+                    (L::Float::ZERO, L::Float::ZERO)
+                };
+                let mut stale = false;
+                if let Some(dt) = drift {
                     let p = &mut sphere.position;
-                    if domain.periodic_x {
+                    *p += sphere.velocity * dt;
+                    if periodic_x {
                         p.x = wrap_into(p.x, domain.lower.x, domain.upper.x);
                     }
-                    if domain.periodic_y {
+                    if periodic_y {
                         p.y = wrap_into(p.y, domain.lower.y, domain.upper.y);
                     }
                     // A sphere that wrapped sits about a box length (at least three cells) from
                     // its anchor, so this also stales the list whose shifts it broke.
-                    let stale = (*p - anchor).norm_squared() > half_skin_squared;
-                    (stale, work)
-                });
+                    stale = (*p - anchor).norm_squared() > half_skin_squared;
+                }
+                // Only the motion changed: only it is checked again.
+                let moved =
+                    checked.set_motion(sphere.position, sphere.velocity, sphere.angular_velocity);
                 match moved {
-                    Ok((stale, (contact, gravity))) => {
+                    Ok(()) => {
                         piece.stale |= stale;
                         piece.contact_work += contact;
-                        piece.gravity_work += gravity;
+                        piece.gravity_work += gravity_work;
                     }
                     Err(_) => {
                         piece.diverged = piece.diverged.or(Some(piece.first + k));
