@@ -185,6 +185,8 @@ proptest! {
             match built {
                 Ok(count) => {
                     prop_assert_eq!(checked.len(), count);
+                    prop_assert_eq!((list.len(), list.is_empty()), (count, count == 0));
+                    prop_assert_eq!(checked.is_empty(), count == 0);
                     prop_assert_eq!(checked.spheres(), 8);
                     prop_assert_eq!(checked.pairs(), &list.buffers().0[..count]);
                     prop_assert_eq!(checked.shifts().len(), count);
