@@ -5,8 +5,8 @@ use core::ops::Deref;
 
 use crate::body::Sphere;
 use crate::error::ContactError;
-use crate::float::{Float, all_finite};
-use crate::vector::Vec3;
+use crate::float::Float;
+use crate::vector::{Vec3, all_finite};
 
 /// A [`Sphere`] whose fields are finite and whose radius and mass are positive. It can only be
 /// made by [`CheckedSphere::new`] and changed through [`CheckedSphere::update`] and
@@ -86,8 +86,8 @@ impl<F: Float> CheckedSphere<F> {
         velocity: Vec3<F>,
         angular_velocity: Vec3<F>,
     ) -> Result<(), ContactError> {
-        let (p, v, w) = (position, velocity, angular_velocity);
-        if !all_finite([p.x, p.y, p.z, v.x, v.y, v.z, w.x, w.y, w.z]) {
+        // As three vectors, so that each probe's x and y go side by side.
+        if !all_finite(&[position, velocity, angular_velocity]) {
             return Err(ContactError::NonFiniteInput);
         }
         self.0.position = position;

@@ -178,7 +178,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         // The energy account needs the kicks' work; a scene without records skips it.
         let book = !self.records.is_empty();
         let (periodic_x, periodic_y) = (domain.periodic_x, domain.periodic_y);
-        executor.for_each_mut(&mut pieces, |piece| {
+        // The step's numbers taken by value: read through references, they were loaded again
+        // for every sphere.
+        executor.for_each_mut(&mut pieces, move |piece| {
             let Some(piece) = piece else { return };
             let mut memo = KickMemo::new(kick);
             let loads = piece.force.iter().zip(piece.torque).zip(piece.anchor);
