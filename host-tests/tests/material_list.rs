@@ -448,14 +448,28 @@ fn evaluate_plain<L: Law<Float = f64>>(
     dt: soft_sphere::TimeStep<f64>,
     states: &mut [L::State],
 ) -> Plain {
-    let n = m.position.len();
+    let pairs = CheckedPairs::new(&m.pairs, &[], m.position.len()).unwrap();
+    evaluate_pairs_by(Route::Auto, t, &m.arrays(), pairs, dt, states)
+}
+
+/// One evaluation of `pairs` (no walls or records) by `route` from `states`, advanced in
+/// place; the forces and torques it adds to zero.
+fn evaluate_pairs_by<L: Law<Float = f64>>(
+    route: Route,
+    t: &MaterialTable<L, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    pairs: CheckedPairs<'_, f64>,
+    dt: soft_sphere::TimeStep<f64>,
+    states: &mut [L::State],
+) -> Plain {
+    let n = arrays.len();
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let mut saved = (
-        vec![L::State::default(); m.pairs.len()],
+        vec![L::State::default(); pairs.len()],
         vec![Vec3::ZERO; 2 * n],
     );
     let list = ContactList {
-        pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
+        pairs,
         pair_states: states,
         walls: &[],
         wall_states: &mut [],
@@ -469,7 +483,7 @@ fn evaluate_plain<L: Law<Float = f64>>(
         },
         records: None,
     };
-    let outcome = t.evaluate(dt, &m.arrays(), list, out);
+    let outcome = t.evaluate_by(route, dt, arrays, list, out);
     (outcome, force, torque)
 }
 
@@ -510,26 +524,8 @@ fn route_checked(
     pairs: CheckedPairs<'_, f64>,
     dt: soft_sphere::TimeStep<f64>,
 ) -> Result<(), ListError> {
-    let n = arrays.len();
     let mut states = vec![State::default(); pairs.len()];
-    let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-    let mut saved = (vec![State::default(); pairs.len()], vec![Vec3::ZERO; 2 * n]);
-    let list = ContactList {
-        pairs,
-        pair_states: &mut states,
-        walls: &[],
-        wall_states: &mut [],
-    };
-    let out = ListOutput {
-        force: &mut force,
-        torque: &mut torque,
-        backup: Backup {
-            states: &mut saved.0,
-            loads: &mut saved.1,
-        },
-        records: None,
-    };
-    let result = t.evaluate_by(route, dt, arrays, list, out);
+    let (result, force, torque) = evaluate_pairs_by(route, t, arrays, pairs, dt, &mut states);
     if result.is_err() {
         let zero = |v: &[Vec3<f64>]| v.iter().all(|x| *x == Vec3::ZERO);
         assert!(zero(&force) && zero(&torque) && states.iter().all(|s| *s == State::default()));
