@@ -503,9 +503,9 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// [`ListError::Length`] for an array of the wrong length; [`ListError::Material`] /
     /// [`ListError::Sphere`] for the first bad sphere; [`ListError::Load`] for the first
     /// sphere whose force or torque is not finite as given; [`ListError::WallMaterial`];
-    /// [`ListError::PairIndex`] for the first pair past the arrays when the pairs were checked
-    /// for more spheres than these (or [`ListError::Shift`]: a list checked for these spheres,
-    /// or fewer, is not checked again); [`ListError::Pair`] and
+    /// [`ListError::PairIndex`] (then [`ListError::Shift`]) for the first bad pair, only when
+    /// the pairs were checked for more spheres than these (a list checked for these spheres or
+    /// fewer is not checked again); [`ListError::Pair`] and
     /// [`ListError::Wall`] for the first refused contact, in list order.
     pub fn evaluate(
         &self,

@@ -51,9 +51,7 @@ pub fn check_pairs<F: Float>(
     spheres: usize,
     order: &mut [u32],
 ) -> Result<(), ListError> {
-    if !shifts.is_empty() && shifts.len() != pairs.len() {
-        return Err(ListError::Length(ListArray::Shifts));
-    }
+    shifts_fit(pairs.len(), shifts.len())?;
     if order.len() != pairs.len() || pairs.len() > u32::MAX as usize {
         return Err(ListError::Length(ListArray::Order));
     }
@@ -79,6 +77,14 @@ pub fn check_pairs<F: Float>(
         }),
         None => Ok(()),
     }
+}
+
+/// A list's shifts are none, or one per pair ([`ListArray::Shifts`]).
+fn shifts_fit(pairs: usize, shifts: usize) -> Result<(), ListError> {
+    if shifts != 0 && shifts != pairs {
+        return Err(ListError::Length(ListArray::Shifts));
+    }
+    Ok(())
 }
 
 /// The first pair naming a sphere past `spheres` ([`ListError::PairIndex`]), then the first
@@ -168,9 +174,7 @@ impl<'a, F: Float> CheckedPairs<'a, F> {
         shifts: &'a [Vec3<F>],
         spheres: usize,
     ) -> Result<Self, ListError> {
-        if !shifts.is_empty() && shifts.len() != pairs.len() {
-            return Err(ListError::Length(ListArray::Shifts));
-        }
+        shifts_fit(pairs.len(), shifts.len())?;
         check_places((pairs, shifts), spheres)?;
         Ok(Self {
             pairs,
@@ -252,9 +256,7 @@ impl<'a, F: Float> PairList<'a, F> {
     /// # Errors
     /// [`ListError::Length`] ([`ListArray::Shifts`]) for shifts of another length.
     pub fn new(pairs: &'a mut [[u32; 2]], shifts: &'a mut [Vec3<F>]) -> Result<Self, ListError> {
-        if !shifts.is_empty() && shifts.len() != pairs.len() {
-            return Err(ListError::Length(ListArray::Shifts));
-        }
+        shifts_fit(pairs.len(), shifts.len())?;
         Ok(Self {
             pairs,
             shifts,
