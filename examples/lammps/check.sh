@@ -22,7 +22,8 @@
 #      their own material, each atom type meeting the wall as it meets a large sphere of the
 #      wall's material; pair_style hybrid beside gran/hooke/history (soft/sphere given all
 #      types, or its own types only) and hybrid/overlay with 'mix'; walls that shear and
-#      wiggle, beside fix wall/gran, across a restart.
+#      wiggle, beside fix wall/gran, across a restart; cylinder walls (zcylinder) that a sphere
+#      rebounds from at e, that turn (rolling it at 2/7 of their speed) and wiggle.
 # Ends with a line "N passed, M failed"; exits non-zero when a check failed.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -1069,25 +1070,33 @@ result "bad input: pair_coeff I I mix" "$ok" "$(printf '%s\n' "$output" | grep -
 # floor is at 2 A (A (1 - cos w t)) and the sphere's centre at R + 2 A less its weight's
 # overlap (within 1 % of A), as native fix wall/gran wiggle's; and a run written to a restart
 # file at 0.75 periods and read back goes on to the same centre (the wiggle's phase kept).
-moving_deck() { # MOTION (shear x 0.1 | wiggle z 2e-5 0.02), WALL (ours | native), STEPS, [restart|resume]
+# one_sphere_deck WALL-ARGUMENTS ours|native STEPS RESTART-FILE [restart|resume]: one sphere and a
+# wall fix (ours, or native fix wall/gran hooke/history beside it), the scene's lines in the
+# arrays `setup` (box, atom, velocity) and `loads` (gravity); prints "RESULT vx vy z" at the end.
+one_sphere_deck() {
   local fix
   if [ "$2" = ours ]; then
-    fix="fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL $1"
+    fix="fix wall all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 $1"
   else
-    fix="fix floor all wall/gran hooke/history 1000 NULL 50 NULL 0.5 1 zplane 0 NULL $1"
+    fix="fix wall all wall/gran hooke/history 1000 NULL 50 NULL 0.5 1 $1"
   fi
-  if [ "${4:-}" = resume ]; then
-    printf '%s\n' "plugin load \${plugin}" "read_restart moving.restart"
+  if [ "${5:-}" = resume ]; then
+    printf '%s\n' "plugin load \${plugin}" "read_restart $4"
   else
-    printf '%s\n' "units si" "atom_style sphere" "atom_modify map array" "boundary p p f" \
-      "comm_modify vel yes" "region box block -0.01 0.01 -0.01 0.01 0 0.01" "create_box 1 box" \
-      "create_atoms 1 single 0 0 0.0005" "set type 1 diameter 1e-3 density 2500" \
-      "velocity all set 0 0 0" "plugin load \${plugin}" "pair_style zero 0.001" "pair_coeff * *"
+    printf '%s\n' "units si" "atom_style sphere" "atom_modify map array" "comm_modify vel yes" \
+      "${setup[@]}" "set type 1 diameter 1e-3 density 2500" "plugin load \${plugin}" \
+      "pair_style zero 0.001" "pair_coeff * *"
   fi
-  printf '%s\n' "neighbor 0.0001 bin" "fix gravity all gravity 9.81 vector 0 0 -1" \
-    "fix integrate all nve/sphere" "$fix" "timestep 2e-6" "run $3"
-  [ "${4:-}" = restart ] && echo "write_restart moving.restart"
-  printf '%s\n' "print \"RESULT \$(vx[1]) \$(z[1])\""
+  printf '%s\n' "neighbor 0.0001 bin" "${loads[@]}" "fix integrate all nve/sphere" "$fix" \
+    "timestep 2e-6" "run $3"
+  [ "${5:-}" = restart ] && echo "write_restart $4"
+  printf '%s\n' "print \"RESULT \$(vx[1]) \$(vy[1]) \$(z[1])\""
+}
+moving_deck() { # MOTION (shear x 0.1 | wiggle z 2e-5 0.02), WALL (ours | native), STEPS, [restart|resume]
+  setup=("boundary p p f" "region box block -0.01 0.01 -0.01 0.01 0 0.01" "create_box 1 box"
+    "create_atoms 1 single 0 0 0.0005" "velocity all set 0 0 0")
+  loads=("fix gravity all gravity 9.81 vector 0 0 -1")
+  one_sphere_deck "zplane 0 NULL $1" "$2" "$3" moving.restart "${4:-}"
 }
 moving() { # deck file: "vx z" at the end, or nothing
   (cd "$work" && "$lmp" -in "$1" -var plugin "$plugin" -log none 2>&1) | sed -n 's/^RESULT //p'
@@ -1127,9 +1136,74 @@ bad_pairs "a plane sheared along its normal" "a plane shears in its own plane" \
 bad_pairs "walls that wiggle and shear" "wiggle or shear, not both" \
   "pair_style zero 0.001" "pair_coeff * *" \
   "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0 NULL shear x 0.1 wiggle z 1e-5 0.01"
-bad_pairs "a cylinder wall" "no plane wall given.*zcylinder is not supported" \
+
+# Cylinder walls (zcylinder R: the inside of a cylinder about the z axis, as fix wall/gran's).
+# A 1 mm sphere moving radially at 0.2 m/s inside a 5 mm drum rebounds at e = 0.9 of it
+# (within 1 %; head-on: no speed across). In a drum of R = 50 m turning at surface speed
+# V = 0.1 m/s (shear x and shear y: fix wall/gran's sense), a sphere held against its side by a
+# gravity across the axis is dragged until its contact point moves with the surface, and rolls
+# at 2/7 V along it, as on the shearing floor (within 1 %: over 0.1 s the drum's curvature turns
+# its weight by 6e-5 rad). The same drum wiggling along its axis (A = 20 um, period 20 ms) rolls
+# the sphere along with it (A w^2 = 2 m/s^2 below mu g): its centre follows 2/7 of the surface's
+# motion, 2/7 of 2 A after 1.5 periods (within 1 %), also written to a restart file at 0.75
+# periods and read back. Native fix wall/gran beside each.
+drum_deck() { # WALL-ARGUMENTS (zcylinder R [motion]), WALL (ours | native), STEPS, GRAVITY (0|1), X, VX, [restart|resume]
+  setup=("boundary f f p" "region box block $(python3 -c "print($5 - 0.002, $5 + 0.002)") -0.01 0.01 -0.01 0.01"
+    "create_box 1 box" "create_atoms 1 single $5 0 0" "velocity all set $6 0 0")
+  loads=()
+  [ "$4" = 1 ] && loads=("fix gravity all gravity 9.81 vector -1 0 0")
+  one_sphere_deck "$1" "$2" "$3" drum.restart "${7:-}"
+}
+drum_deck "zcylinder 0.005" ours 2000 0 0.004 0.2 > "$work/drum_impact.in"
+drum_deck "zcylinder 0.005" native 2000 0 0.004 0.2 > "$work/drum_impact_native.in"
+ours="$(moving drum_impact.in)"
+native="$(moving drum_impact_native.in)"
+read -r vx vy _ <<< "${ours:-x x x}"
+ok=1
+if [ -n "$ours" ] && compare "$vx" -0.18 1e-2 && python3 -c "import sys; sys.exit(0 if abs($vy) < 1e-9 else 1)"; then ok=0; fi
+result "a sphere moving radially in a zcylinder rebounds at e" "$ok" \
+  "vx vy after: $vx $vy (-0.9 x 0.2 = -0.18, 0), native fix wall/gran (its own damping): ${native%% *}"
+for dim in x y; do
+  drum_deck "zcylinder 50 shear $dim 0.1" ours 50000 1 -49.9995 0 > "$work/drum_$dim.in"
+  ours="$(moving "drum_$dim.in")"
+  read -r vx vy _ <<< "${ours:-x x x}"
+  ok=1
+  if [ -n "$ours" ] && compare "$vy" 0.0285714 1e-2; then ok=0; fi
+  result "a zcylinder turning at 0.1 m/s (shear $dim) rolls a sphere on its side at 2/7 of it" "$ok" \
+    "vy after 0.1 s: $vy (2/7 x 0.1 = 0.0285714)"
+done
+drum_deck "zcylinder 50 shear x 0.1" native 50000 1 -49.9995 0 > "$work/drum_native.in"
+native="$(moving drum_native.in)"
+echo "     native fix wall/gran zcylinder shear x 0.1, vx vy z: $native"
+drum_deck "zcylinder 50 wiggle z 2e-5 0.02" ours 15000 1 -49.9995 0 > "$work/drum_wiggle.in"
+drum_deck "zcylinder 50 wiggle z 2e-5 0.02" native 15000 1 -49.9995 0 > "$work/drum_wiggle_native.in"
+drum_deck "zcylinder 50 wiggle z 2e-5 0.02" ours 7500 1 -49.9995 0 restart > "$work/drum_first.in"
+drum_deck "zcylinder 50 wiggle z 2e-5 0.02" ours 7500 1 -49.9995 0 resume > "$work/drum_second.in"
+ours="$(moving drum_wiggle.in)"
+native="$(moving drum_wiggle_native.in)"
+moving drum_first.in > /dev/null
+resumed="$(moving drum_second.in)"
+ok=1
+if [ -n "$ours" ] && [ -n "$resumed" ] && python3 - "${ours##* }" "${resumed##* }" <<'PY'; then ok=0; fi
+import sys
+ours, resumed = map(float, sys.argv[1:])
+expected = 2 / 7 * 4e-5
+sys.exit(0 if abs(ours - expected) < 1e-2 * expected and abs(resumed - ours) <= 1e-12 * abs(ours) else 1)
+PY
+result "a zcylinder wiggling along its axis rolls a sphere on its side, across a restart" "$ok" \
+  "z after 1.5 periods: ${ours##* } (2/7 x 2 A = 1.142857e-05), written and read back at 0.75 periods: ${resumed##* }, native fix wall/gran: ${native##* }"
+bad_pairs "a zcylinder in a periodic box" "zcylinder needs x and y not periodic" \
   "pair_style zero 0.001" "pair_coeff * *" \
-  "fix floor all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.004 NULL NULL"
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.004"
+bad_pairs "a zcylinder of no radius" "zcylinder R: the radius must be a positive number" \
+  "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" \
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0"
+bad_pairs "a zcylinder wiggling across its axis" "a zcylinder wiggles along its axis only" \
+  "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" \
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.004 wiggle x 1e-5 0.01"
+bad_pairs "a sphere wider than its zcylinder on the axis" "atom 1 against the wall: the two centres coincide, or a sphere wider than a cylinder wall is on its axis" \
+  "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" "set atom 1 x 0 y 0" \
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.0004"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

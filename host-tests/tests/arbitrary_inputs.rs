@@ -8,7 +8,7 @@ use soft_sphere::checks;
 use soft_sphere::{
     ContactLaw, ContactState, Hertz, HertzImpact, Interaction, LinearSpringDashpot, MicroSlip,
     MicroSlipSprings, MindlinParameters, ModelAA, Sphere, SpringDisplacement, TangentialParameters,
-    Wall,
+    Wall, WallShape,
 };
 
 /// Bytes for one case: either raw (any bit pattern) or the little-endian bytes of ordinary
@@ -131,12 +131,17 @@ fn arbitrary_spheres_and_states_give_a_contact_or_an_error() {
 #[test]
 fn arbitrary_walls_and_laws_are_valid_or_skipped() {
     let mut random = Xorshift::new(5);
-    let (mut walls, mut laws) = (0, 0);
+    let (mut walls, mut laws, mut cylinders) = (0, 0, 0);
     for k in 0..5_000 {
         let data = bytes(&mut random, k % 2 == 0);
         let mut u = Unstructured::new(&data);
         if let Ok(w) = Wall::<f64>::arbitrary(&mut u) {
-            assert!((w.normal().norm_squared() - 1.0).abs() < 1e-12 && w.velocity().is_finite());
+            assert!((w.direction().norm_squared() - 1.0).abs() < 1e-12 && w.velocity().is_finite());
+            assert!(w.spin().is_finite() && w.point().is_finite());
+            if let WallShape::Cylinder { radius } = w.shape() {
+                assert!(radius > 0.0 && radius.is_finite());
+                cylinders += 1;
+            }
             walls += 1;
         }
         let mut u = Unstructured::new(&data);
@@ -145,7 +150,10 @@ fn arbitrary_walls_and_laws_are_valid_or_skipped() {
             laws += 1;
         }
     }
-    assert!(walls > 100 && laws > 100, "{walls} {laws}");
+    assert!(
+        walls > 100 && laws > 100 && cylinders > 20,
+        "{walls} {laws} {cylinders}"
+    );
 }
 
 /// The states take the fuzzer's bytes field by field, in declaration order, so a target can aim

@@ -114,7 +114,7 @@ fn walls_are_validated() {
     );
     // A valid normal is normalised.
     assert_eq!(
-        Wall::new(Vec3::ZERO, up).unwrap().normal(),
+        Wall::new(Vec3::ZERO, up).unwrap().direction(),
         Vec3::new(0.0, 0.0, 1.0)
     );
 }

@@ -292,16 +292,6 @@ fn one_at_a_time(
 
 #[test]
 fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
-    for route in ROUTES {
-        // Both walls, and the floor alone (the walls' sift reads one wall's plane once).
-        mixture_bits(route, 2);
-        mixture_bits(route, 1);
-    }
-}
-
-fn mixture_bits(route: Route, wall_count: usize) {
-    let t = table();
-    let mut m = Mixture::new(60, 7);
     // A steel floor under the lowest layer and a rubber side wall through the first column:
     // both touched from the first step.
     let wall = |point: Vec3<f64>, normal: Vec3<f64>, material| MaterialWall {
@@ -312,7 +302,30 @@ fn mixture_bits(route: Route, wall_count: usize) {
         wall(Vec3::new(0.0, 0.0, 1.0e-3), Vec3::new(0.0, 0.0, 1.0), 2),
         wall(Vec3::new(-0.6e-3, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), 1),
     ];
-    let walls = &both[..wall_count];
+    // A steel drum about the columns, turning (0.24 m/s at its surface), that the corner
+    // columns' large spheres touch, on the floor.
+    let axis = Vec3::new(2.85e-3, 2.85e-3, 0.0);
+    let drum = Wall::cylinder(axis, Vec3::new(0.0, 0.0, 1.0), 4.8e-3)
+        .and_then(|w| w.with_spin(50.0))
+        .unwrap();
+    let turning = [
+        both[0],
+        MaterialWall {
+            wall: drum,
+            material: 2,
+        },
+    ];
+    for route in ROUTES {
+        // Both walls, and the floor alone (the walls' sift reads one wall's plane once).
+        mixture_bits(route, &both);
+        mixture_bits(route, &both[..1]);
+        mixture_bits(route, &turning);
+    }
+}
+
+fn mixture_bits(route: Route, walls: &[MaterialWall<f64>]) {
+    let t = table();
+    let mut m = Mixture::new(60, 7);
     let dt = t.coarse_time_step(2.0e-6, &m.arrays(), walls).unwrap();
     let n = m.position.len();
     let mut states = vec![State::default(); m.pairs.len()];
@@ -327,6 +340,7 @@ fn mixture_bits(route: Route, wall_count: usize) {
     let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let (mut touching, mut mixed, mut sliding) = (0, 0, 0);
     let (mut on_walls, mut inaccurate) = (0, 0);
+    let mut each_wall = vec![0; walls.len()];
     for step in 0..200 {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         let list = ContactList {
@@ -365,6 +379,9 @@ fn mixture_bits(route: Route, wall_count: usize) {
             .filter_map(|o| touching_forces(&o))
             .collect();
         assert_eq!(stats.wall_contacts, wall_forces.len());
+        for (k, o) in outcomes[m.pairs.len()..].iter().enumerate() {
+            each_wall[k % walls.len()] += usize::from(o.forces().is_some());
+        }
         on_walls += wall_forces.iter().filter(|c| c.sliding).count();
         let all: Vec<_> = outcomes
             .iter()
@@ -418,6 +435,10 @@ fn mixture_bits(route: Route, wall_count: usize) {
     assert!(
         touching > 1000 && mixed > 300 && sliding > 10 && on_walls > 10 && inaccurate > 100,
         "{touching} {mixed} {sliding} {on_walls} {inaccurate}"
+    );
+    assert!(
+        each_wall.iter().all(|&n| n > 100),
+        "contacts on each wall: {each_wall:?}"
     );
 }
 

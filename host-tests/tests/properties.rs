@@ -819,14 +819,22 @@ fn arbitrary_bits_never_panic<F: Float>(bits: &[u64; 16]) -> Result<(), TestCase
             "a rejected call changed the state"
         ),
     }
-    let wall = soft_sphere::Wall::new(v(4), v(8));
-    if let Ok(wall) = wall {
+    // A plane, and a turning cylinder about the same line.
+    let walls = [
+        soft_sphere::Wall::new(v(4), v(8)),
+        soft_sphere::Wall::cylinder(v(4), v(8), x(13)).and_then(|w| w.with_spin(x(14))),
+    ];
+    for wall in walls.into_iter().flatten() {
         let mut state = before;
-        if law.sphere_wall(&j, &wall, &mut state, dt).is_err() {
-            prop_assert_eq!(
+        match law.sphere_wall(&j, &wall, &mut state, dt) {
+            Ok(Interaction::Touching(c)) => {
+                prop_assert!(c.force_on_j().is_finite() && c.torque_on_i.is_finite());
+            }
+            Ok(Interaction::Apart) => prop_assert_eq!(state, SpringDisplacement::default()),
+            Err(_) => prop_assert_eq!(
                 soft_sphere::checks::state_unchanged(&before, &state),
                 Ok(())
-            );
+            ),
         }
     }
     Ok(())

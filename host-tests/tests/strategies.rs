@@ -10,7 +10,7 @@ use soft_sphere::strategies::{
     grazing_pair, hertz, impact, linear_spring_dashpot, mindlin_parameters, sphere,
     tangential_parameters, touching_pair, unit_vector, wall,
 };
-use soft_sphere::{CheckedSphere, NormalModel, Vec3, effective_mass};
+use soft_sphere::{CheckedSphere, NormalModel, Vec3, WallShape, effective_mass};
 
 fn within(x: f64, low: f64, high: f64) -> bool {
     x >= low * (1.0 - 1e-12) && x <= high * (1.0 + 1e-12)
@@ -100,7 +100,11 @@ proptest! {
     ) {
         prop_assert!(CheckedSphere::new(s).is_ok());
         prop_assert!(s.position.to_array().iter().all(|x| x.abs() <= 1.0));
-        prop_assert!((w.normal().norm_squared() - 1.0).abs() < 1e-12);
+        prop_assert!((w.direction().norm_squared() - 1.0).abs() < 1e-12);
+        prop_assert!(w.spin().abs() <= 20.0);
+        if let WallShape::Cylinder { radius } = w.shape() {
+            prop_assert!(within(radius, 0.05, 2.0));
+        }
         prop_assert!(w.point().to_array().iter().all(|x| x.abs() <= 1.0));
         prop_assert!(w.velocity().to_array().iter().all(|x| x.abs() <= 2.0));
         let spin = (s.angular_velocity * s.radius).to_array();

@@ -1,8 +1,6 @@
-//! The bodies a contact is between: spheres and plane walls, as the caller's engine describes them
-//! at one instant.
+//! The spheres a contact is between, as the caller's engine describes them at one instant
+//! (walls: [`Wall`](crate::Wall)).
 
-use crate::backend::MathBackend;
-use crate::error::{Parameter, ParameterError};
 use crate::float::{Float, all_finite};
 use crate::vector::Vec3;
 
@@ -65,89 +63,6 @@ impl<F: Float> Sphere<F> {
             self.radius,
             self.mass,
         ])
-    }
-}
-
-/// An infinite plane wall. Spheres live on the side its normal points to. The wall may translate
-/// (its velocity enters the contact's relative velocity); it does not rotate. Every field is
-/// checked when it is set, so a wall is always valid and contacts never check it again.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Wall<F> {
-    point: Vec3<F>,
-    normal: Vec3<F>,
-    velocity: Vec3<F>,
-}
-
-impl<F: Float> Wall<F> {
-    /// A wall through `point` whose outward normal (towards the spheres) is along `normal`.
-    /// The normal is normalised here, once, with the reference backend.
-    ///
-    /// # Errors
-    /// [`ParameterError::NonFinite`] for a non-finite point or normal,
-    /// [`ParameterError::NotPositive`] for a zero (or denormal-length) normal.
-    pub fn new(point: Vec3<F>, normal: Vec3<F>) -> Result<Self, ParameterError> {
-        if !point.is_finite() || !normal.is_finite() {
-            return Err(ParameterError::NonFinite(Parameter::Wall));
-        }
-        let length_squared = normal.norm_squared();
-        if !length_squared.is_finite() {
-            return Err(ParameterError::NonFinite(Parameter::Wall));
-        }
-        if length_squared < F::MIN_POSITIVE {
-            return Err(ParameterError::NotPositive(Parameter::Wall));
-        }
-        let unit = normal * F::DefaultBackend::inv_sqrt(length_squared);
-        Ok(Self {
-            point,
-            normal: unit,
-            velocity: Vec3::ZERO,
-        })
-    }
-
-    /// The same wall moving with `velocity` (m/s), for moving floors and pistons (zero by
-    /// default).
-    ///
-    /// # Errors
-    /// [`ParameterError::NonFinite`] for a non-finite velocity.
-    pub fn with_velocity(mut self, velocity: Vec3<F>) -> Result<Self, ParameterError> {
-        if !velocity.is_finite() {
-            return Err(ParameterError::NonFinite(Parameter::Wall));
-        }
-        self.velocity = velocity;
-        Ok(self)
-    }
-
-    /// The same wall, translated so that it passes through `point` (for walls the caller moves).
-    ///
-    /// # Errors
-    /// [`ParameterError::NonFinite`] for a non-finite point.
-    pub fn moved_to(mut self, point: Vec3<F>) -> Result<Self, ParameterError> {
-        if !point.is_finite() {
-            return Err(ParameterError::NonFinite(Parameter::Wall));
-        }
-        self.point = point;
-        Ok(self)
-    }
-
-    /// The wall's velocity (m/s).
-    pub fn velocity(&self) -> Vec3<F> {
-        self.velocity
-    }
-
-    /// A point on the wall.
-    pub fn point(&self) -> Vec3<F> {
-        self.point
-    }
-
-    /// The unit outward normal.
-    pub fn normal(&self) -> Vec3<F> {
-        self.normal
-    }
-
-    /// Signed distance from `position` to the plane (positive on the spheres' side).
-    #[inline(always)]
-    pub fn distance_to(&self, position: Vec3<F>) -> F {
-        (position - self.point).dot(self.normal)
     }
 }
 

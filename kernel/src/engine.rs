@@ -2,7 +2,6 @@
 //! time step ([`BoundLaw`]) and evaluated on checked spheres with no repeated checks.
 
 use crate::batch::{ContactBlock, PairBlock};
-use crate::body::Wall;
 use crate::checked::CheckedSphere;
 use crate::error::{ContactError, ParameterError};
 use crate::float::Float;
@@ -10,6 +9,7 @@ use crate::law::Interaction;
 use crate::normal::NormalOscillator;
 use crate::tangential::ContactState;
 use crate::time_step::TimeStep;
+use crate::wall::Wall;
 
 pub(crate) mod sealed {
     /// Only the kernel's [`ContactLaw`](crate::ContactLaw) is a [`Law`](super::Law).
@@ -310,8 +310,9 @@ impl<L: Law> BoundLaw<L> {
     ///
     /// # Errors
     /// [`ContactError::NonFiniteResult`] when the checked inputs overflow;
-    /// [`ContactError::PastStableStep`] for a contact stiffer than the step allows. The state is
-    /// then unchanged.
+    /// [`ContactError::PastStableStep`] for a contact stiffer than the step allows;
+    /// [`ContactError::CoincidentCentres`] for a sphere centred on a cylinder's axis that reaches
+    /// it. The state is then unchanged.
     #[inline(always)]
     pub fn sphere_wall(
         &mut self,

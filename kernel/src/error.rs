@@ -123,7 +123,8 @@ pub enum ContactError {
     NonPositiveRadius,
     /// A mass is zero or negative.
     NonPositiveMass,
-    /// The two centres coincide (their squared distance is below the smallest normal float), so
+    /// The two centres coincide (their squared distance is below the smallest normal float), or
+    /// a sphere reaching a cylinder wall is centred on its axis (one wider than the cylinder):
     /// the contact normal is undefined.
     CoincidentCentres,
     /// The inputs were finite but the force, torque or new state overflowed.
@@ -146,7 +147,9 @@ impl fmt::Display for ContactError {
             Self::NonFiniteInput => "an input is NaN or infinite",
             Self::NonPositiveRadius => "a radius is zero or negative",
             Self::NonPositiveMass => "a mass is zero or negative",
-            Self::CoincidentCentres => "the sphere centres coincide",
+            Self::CoincidentCentres => {
+                "the sphere centres coincide (or a sphere is centred on a cylinder wall's axis)"
+            }
             Self::NonFiniteResult => "the contact force overflowed",
             Self::HistoryFull => "the contact-history store is full",
             Self::PastStableStep => {

@@ -8,7 +8,7 @@
 
 use arbitrary::{Arbitrary, Error, Result, Unstructured};
 
-use crate::body::{Sphere, Wall};
+use crate::body::Sphere;
 use crate::float::Float;
 use crate::material::Material;
 use crate::normal::{Hertz, HertzImpact, LinearSpringDashpot};
@@ -17,6 +17,7 @@ use crate::tangential::{
     MicroSlipSprings, MindlinParameters, MindlinSpring, SpringDisplacement, TangentialParameters,
 };
 use crate::vector::Vec3;
+use crate::wall::Wall;
 
 impl<'a, F: Float + Arbitrary<'a>> Arbitrary<'a> for Vec3<F> {
     fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
@@ -43,8 +44,14 @@ fn refused<T, E>(built: core::result::Result<T, E>) -> Result<T> {
 
 impl<'a, F: Float + Arbitrary<'a>> Arbitrary<'a> for Wall<F> {
     fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
-        let wall = refused(Wall::new(u.arbitrary()?, u.arbitrary()?))?;
-        refused(wall.with_velocity(u.arbitrary()?))
+        let (point, direction) = (u.arbitrary()?, u.arbitrary()?);
+        let wall = if u.arbitrary()? {
+            refused(Wall::cylinder(point, direction, u.arbitrary()?))?
+        } else {
+            refused(Wall::new(point, direction))?
+        };
+        let (velocity, spin) = (u.arbitrary()?, u.arbitrary()?);
+        refused(wall.with_velocity(velocity).and_then(|w| w.with_spin(spin)))
     }
 }
 

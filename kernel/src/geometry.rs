@@ -2,10 +2,11 @@
 //! velocities, for sphere-sphere and sphere-wall contacts.
 
 use crate::backend::MathBackend;
-use crate::body::{Sphere, Wall};
+use crate::body::Sphere;
 use crate::error::ContactError;
 use crate::float::Float;
 use crate::vector::Vec3;
+use crate::wall::Wall;
 
 /// The lever arm from a sphere's centre to the contact point, used for both the slip velocity and
 /// the torque (the same arm in both keeps the contact energetically passive).
@@ -207,39 +208,37 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
 }
 
 /// The contact between a checked sphere (body i) and a wall (body j), `None` when they do not
-/// overlap.
+/// overlap ([`crate::wall`]: against the plane tangent to the wall nearest the centre).
+///
+/// # Errors
+/// [`ContactError::CoincidentCentres`] for an overlapping sphere centred on a cylinder's axis.
 #[inline(always)]
 pub(crate) fn sphere_wall<F: Float>(
     sphere: &Sphere<F>,
     wall: &Wall<F>,
     lever_arm: LeverArm,
-) -> Option<ContactFrame<F>> {
-    let (distance, overlap) = wall_overlap(sphere.position, sphere.radius, wall);
-    if !reaches(overlap) {
-        return None;
+) -> Result<Option<ContactFrame<F>>, ContactError> {
+    if !reaches_wall(sphere.position, sphere.radius, wall) {
+        return Ok(None);
     }
+    let Some((outward, distance, surface_velocity)) = wall.surface_at(sphere.position) else {
+        return Err(ContactError::CoincidentCentres);
+    };
     let arm_i = match lever_arm {
         LeverArm::Radius => sphere.radius,
         LeverArm::ContactPlane => distance.max_of(F::ZERO),
     };
-    Some(ContactFrame {
+    Ok(Some(ContactFrame {
         // From the sphere into the wall.
-        normal: -wall.normal(),
-        overlap,
+        normal: -outward,
+        overlap: sphere.radius - distance,
         effective_radius: sphere.radius,
         arm_i,
         arm_j: F::ZERO,
-        velocity: wall.velocity() - sphere.velocity,
+        velocity: surface_velocity - sphere.velocity,
         angular_velocity_i: sphere.angular_velocity,
         angular_velocity_j: Vec3::ZERO,
-    })
-}
-
-/// The distance from a sphere's centre to a wall and their overlap.
-#[inline(always)]
-fn wall_overlap<F: Float>(position: Vec3<F>, radius: F, wall: &Wall<F>) -> (F, F) {
-    let distance = wall.distance_to(position);
-    (distance, radius - distance)
+    }))
 }
 
 /// Whether an overlap is evaluated: positive, or NaN (finite inputs whose distance overflowed),
@@ -257,5 +256,5 @@ fn reaches<F: Float>(overlap: F) -> bool {
 /// same test), so an engine can sift its spheres against a wall before evaluating them.
 #[inline(always)]
 pub(crate) fn reaches_wall<F: Float>(position: Vec3<F>, radius: F, wall: &Wall<F>) -> bool {
-    reaches(wall_overlap(position, radius, wall).1)
+    reaches(radius - wall.distance_to(position))
 }

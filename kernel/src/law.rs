@@ -4,7 +4,7 @@ use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
 use crate::batch::{self, ContactBlock, PairBlock};
-use crate::body::{Sphere, Wall, effective_mass};
+use crate::body::{Sphere, effective_mass};
 use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law, sealed};
 use crate::error::{ContactError, Parameter, ParameterError, positive};
@@ -18,6 +18,7 @@ use crate::tangential::{
 };
 use crate::time_step::TimeStep;
 use crate::vector::Vec3;
+use crate::wall::Wall;
 
 /// A soft-sphere contact law built from slots: `N` the normal law, `T` the tangential law,
 /// `M` the math backend, `R` whether rotation counts. Slots that a scene does not need are
@@ -493,11 +494,12 @@ where
     }
 
     /// Evaluates the contact between a sphere (body i) and a wall (body j) for one step, checking
-    /// the sphere. State handling and errors as for [`ContactLaw::sphere_sphere`] (a wall cannot
-    /// coincide, and is valid by construction).
+    /// the sphere. State handling and errors as for [`ContactLaw::sphere_sphere`] (a wall is valid
+    /// by construction).
     ///
     /// # Errors
-    /// As [`ContactLaw::sphere_sphere`], without [`ContactError::CoincidentCentres`].
+    /// As [`ContactLaw::sphere_sphere`]; [`ContactError::CoincidentCentres`] only for a sphere
+    /// centred on a cylinder's axis that reaches it (one wider than the cylinder).
     #[inline]
     pub fn sphere_wall(
         &self,
@@ -507,7 +509,7 @@ where
         time_step: TimeStep<F>,
     ) -> Result<Interaction<F>, ContactError> {
         checked::check(sphere)?;
-        let frame = geometry::sphere_wall(sphere, wall, self.lever_arm);
+        let frame = geometry::sphere_wall(sphere, wall, self.lever_arm)?;
         let oscillator = || (self.normal.oscillator::<M>(sphere.mass), sphere.mass);
         let allowed = self.allowed_rate_squared(time_step);
         Ok(self
@@ -836,7 +838,7 @@ where
             unstable: count,
             ..
         } = bound;
-        let frame = geometry::sphere_wall(sphere, wall, law.lever_arm);
+        let frame = geometry::sphere_wall(sphere, wall, law.lever_arm)?;
         let oscillator = || {
             let oscillator = *memo.get(sphere.mass, |mass| law.normal.oscillator::<M>(*mass));
             (oscillator, sphere.mass)

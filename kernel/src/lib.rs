@@ -239,11 +239,12 @@ mod table;
 pub mod tangential;
 mod time_step;
 mod vector;
+mod wall;
 
 #[cfg(feature = "std")]
 pub use backend::Std;
 pub use backend::{Libm, MathBackend, Micromath};
-pub use body::{Sphere, Wall, effective_mass};
+pub use body::{Sphere, effective_mass};
 pub use checked::CheckedSphere;
 pub use engine::{BoundLaw, Law};
 pub use error::{ContactError, Parameter, ParameterError};
@@ -278,3 +279,4 @@ pub use tangential::{
 };
 pub use time_step::TimeStep;
 pub use vector::Vec3;
+pub use wall::{Wall, WallShape};

@@ -10,7 +10,7 @@
 //! smallest effective mass its spheres give, and every wall's material.
 
 use crate::batch::{BlockGroup, BlockPairs};
-use crate::body::{Sphere, Wall, effective_mass};
+use crate::body::{Sphere, effective_mass};
 use crate::checked::CheckedSphere;
 use crate::engine::sealed::Deferred;
 use crate::engine::{BoundLaw, Law};
@@ -27,6 +27,7 @@ use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
 use crate::time_step::TimeStep;
 use crate::vector::{Vec3, all_finite};
+use crate::wall::Wall;
 
 /// How [`MaterialTable::evaluate_by`] evaluates the touching pairs: the same results by every
 /// route.
@@ -60,7 +61,7 @@ impl Route {
     }
 }
 
-/// A plane wall made of a material of the table.
+/// A wall (a plane or a cylinder) made of a material of the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MaterialWall<F> {
     /// The wall.

@@ -21,12 +21,13 @@ use core::ops::RangeInclusive;
 
 use proptest::prelude::*;
 
-use crate::body::{Sphere, Wall};
+use crate::body::Sphere;
 use crate::float::Float;
 use crate::normal::{Hertz, HertzImpact, LinearSpringDashpot};
 use crate::rolling::{ConstantRolling, ElasticPlasticRolling};
 use crate::tangential::{MindlinParameters, TangentialParameters};
 use crate::vector::Vec3;
+use crate::wall::Wall;
 
 /// A value drawn log-uniformly from `[low, high]` (both positive).
 pub fn log_uniform(low: f64, high: f64) -> impl Strategy<Value = f64> + Clone {
@@ -314,15 +315,26 @@ pub fn sphere<F: Float>() -> impl Strategy<Value = Sphere<F>> + Clone {
     })
 }
 
-/// A plane wall through a point within +-1 m, any unit normal, moving at up to 2 m/s per
-/// component.
+/// A plane wall through a point within +-1 m with any unit normal, or a cylinder of radius 0.05
+/// to 2 m about an axis through such a point; moving at up to 2 m/s per component, turning at up
+/// to 20 rad/s about its axis.
 pub fn wall<F: Float>() -> impl Strategy<Value = Wall<F>> + Clone {
-    (triple(), unit_vector(), triple()).prop_filter_map("a valid wall", |(at, normal, velocity)| {
-        let at = rounded(at.map(|x| x / 2.0));
-        Wall::new(at, rounded(normal))
+    let shape = prop_oneof![Just(None), log_uniform(0.05, 2.0).prop_map(Some)];
+    let motion = (triple(), prop_oneof![Just(0.0), -20.0..20.0]);
+    (triple(), unit_vector(), shape, motion).prop_filter_map(
+        "a valid wall",
+        |(at, direction, shape, (velocity, spin))| {
+            let at = rounded(at.map(|x| x / 2.0));
+            let direction = rounded(direction);
+            match shape {
+                None => Wall::new(at, direction),
+                Some(radius) => Wall::cylinder(at, direction, F::from_f64(radius)),
+            }
             .and_then(|wall| wall.with_velocity(rounded(velocity)))
+            .and_then(|wall| wall.with_spin(F::from_f64(spin)))
             .ok()
-    })
+        },
+    )
 }
 
 /// The linear normal slot: `k_n` 10 to 1e7 N/m (log-uniform), `e` in `[0, 1]`.

@@ -30,7 +30,7 @@ static int tangential_restitution(int angle_deg, double *e_t) {
         .velocity = {SPEED * sin(theta), 0.0, -SPEED * cos(theta)},
         .radius = RADIUS, .mass = mass,
     };
-    ss_wall_f64 floor_wall = {.point = {0, 0, 0}, .normal = {0, 0, 1}};
+    ss_wall_f64 floor_wall = {.point = {0, 0, 0}, .direction = {0, 0, 1}};
     ss_state_f64 state = {.displacement = {0, 0, 0}};
     ss_vec3_f64 zero = {0, 0, 0};
     double incoming = sphere.velocity.x;

@@ -51,7 +51,7 @@ int main() {
     sphere.radius = radius;
     sphere.mass = mass;
     ss_wall_f64 floor_wall{};
-    floor_wall.normal = {0.0, 0.0, 1.0};
+    floor_wall.direction = {0.0, 0.0, 1.0};
     ss_state_f64 state{};
     const ss_vec3_f64 zero{0.0, 0.0, 0.0};
     const double incoming = sphere.velocity.x;

@@ -29,7 +29,7 @@ program impact
   zero = ss_vec3_f64(0d0, 0d0, 0d0)
   sphere = ss_sphere_f64(ss_vec3_f64(0d0, 0d0, radius), &
                          ss_vec3_f64(speed * sin(theta), 0d0, -speed * cos(theta)), zero, radius, mass)
-  floor_wall = ss_wall_f64(zero, ss_vec3_f64(0d0, 0d0, 1d0), zero)
+  floor_wall = ss_wall_f64(zero, ss_vec3_f64(0d0, 0d0, 1d0), zero, 0d0, 0d0)
   state = ss_state_f64(zero, zero, 0d0)
   incoming = sphere%velocity%x
   touched = .false.

@@ -13,7 +13,8 @@ module soft_sphere
     real(c_double) :: radius, mass
   end type
   type, bind(c) :: ss_wall_f64
-    type(ss_vec3_f64) :: point, normal, velocity
+    type(ss_vec3_f64) :: point, direction, velocity
+    real(c_double) :: radius, spin
   end type
   type, bind(c) :: ss_params_f64
     integer(c_int32_t) :: model

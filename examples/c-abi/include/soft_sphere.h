@@ -73,7 +73,7 @@
 #define SS_ERR_NON_POSITIVE_MASS 10
 
 /**
- * The two centres coincide.
+ * The two centres coincide, or a sphere wider than a cylinder wall is centred on its axis.
  */
 #define SS_ERR_COINCIDENT_CENTRES 11
 
@@ -567,21 +567,33 @@ typedef struct {
 } ss_forces_f64;
 
 /**
- * A plane wall through `point` with outward `normal` (any length), moving at `velocity`.
+ * A wall: a plane through `point` whose outward normal is `direction` (any length), or, when
+ * `radius` is positive, the inside of a cylinder of that radius about the axis through `point`
+ * along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
+ * normal through `point`), its surface staying in place. A zeroed struct's fields after
+ * `direction` make a still plane.
  */
 typedef struct {
   /**
-   * A point on the plane (m).
+   * A point on the plane; a point on the cylinder's axis (m).
    */
   ss_vec3_f64 point;
   /**
-   * The side the spheres are on.
+   * The plane's outward normal (the side the spheres are on); the cylinder's axis.
    */
-  ss_vec3_f64 normal;
+  ss_vec3_f64 direction;
   /**
    * Wall velocity (m/s).
    */
   ss_vec3_f64 velocity;
+  /**
+   * Zero for a plane; a cylinder's radius (m), the spheres inside.
+   */
+  double radius;
+  /**
+   * Turning rate about the axis, right-handed about `direction` (rad/s).
+   */
+  double spin;
 } ss_wall_f64;
 
 /**
@@ -931,7 +943,7 @@ typedef struct {
 } ss_loads_f64;
 
 /**
- * Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+ * Walls (planes or cylinders) for `ss_table_evaluate_walls_*`, all of one material of the table, and each
  * atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
  * numbers from `states + k * stride + w * wall_stride`.
  */
@@ -1125,21 +1137,33 @@ typedef struct {
 } ss_forces_f32;
 
 /**
- * A plane wall through `point` with outward `normal` (any length), moving at `velocity`.
+ * A wall: a plane through `point` whose outward normal is `direction` (any length), or, when
+ * `radius` is positive, the inside of a cylinder of that radius about the axis through `point`
+ * along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
+ * normal through `point`), its surface staying in place. A zeroed struct's fields after
+ * `direction` make a still plane.
  */
 typedef struct {
   /**
-   * A point on the plane (m).
+   * A point on the plane; a point on the cylinder's axis (m).
    */
   ss_vec3_f32 point;
   /**
-   * The side the spheres are on.
+   * The plane's outward normal (the side the spheres are on); the cylinder's axis.
    */
-  ss_vec3_f32 normal;
+  ss_vec3_f32 direction;
   /**
    * Wall velocity (m/s).
    */
   ss_vec3_f32 velocity;
+  /**
+   * Zero for a plane; a cylinder's radius (m), the spheres inside.
+   */
+  float radius;
+  /**
+   * Turning rate about the axis, right-handed about `direction` (rad/s).
+   */
+  float spin;
 } ss_wall_f32;
 
 /**
@@ -1489,7 +1513,7 @@ typedef struct {
 } ss_loads_f32;
 
 /**
- * Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+ * Walls (planes or cylinders) for `ss_table_evaluate_walls_*`, all of one material of the table, and each
  * atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
  * numbers from `states + k * stride + w * wall_stride`.
  */

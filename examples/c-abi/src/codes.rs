@@ -26,7 +26,7 @@ pub const SS_ERR_NON_FINITE_INPUT: i32 = 8;
 pub const SS_ERR_NON_POSITIVE_RADIUS: i32 = 9;
 /// A mass is not positive.
 pub const SS_ERR_NON_POSITIVE_MASS: i32 = 10;
-/// The two centres coincide.
+/// The two centres coincide, or a sphere wider than a cylinder wall is centred on its axis.
 pub const SS_ERR_COINCIDENT_CENTRES: i32 = 11;
 /// The result would not be finite.
 pub const SS_ERR_NON_FINITE_RESULT: i32 = 12;

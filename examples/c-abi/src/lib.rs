@@ -190,12 +190,19 @@ fn sphere_as_j<F: Float>(interaction: Interaction<F>) -> Interaction<F> {
     }
 }
 
-/// The kernel's wall for `*wall`, checked.
+/// The kernel's wall for `*wall`, checked: a plane for a zero radius (of either sign), a
+/// cylinder for a positive one; any other radius is refused.
 #[inline(always)]
-fn plane_of<F: Float>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
-    Wall::new(wall.point.into(), wall.normal.into())
-        .and_then(|plane| plane.with_velocity(wall.velocity.into()))
-        .map_err(|_| SS_ERR_BAD_WALL)
+fn wall_of<F: Float>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
+    let (point, direction) = (wall.point.into(), wall.direction.into());
+    if wall.radius == F::ZERO {
+        Wall::new(point, direction)
+    } else {
+        Wall::cylinder(point, direction, wall.radius)
+    }
+    .and_then(|w| w.with_velocity(wall.velocity.into()))
+    .and_then(|w| w.with_spin(wall.spin))
+    .map_err(|_| SS_ERR_BAD_WALL)
 }
 
 /// # Safety
@@ -245,7 +252,7 @@ unsafe fn on_wall<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    let plane = match plane_of(wall) {
+    let plane = match wall_of(wall) {
         Ok(plane) => plane,
         Err(code) => return code,
     };
@@ -271,7 +278,9 @@ pub struct ss_bound_law<F: Float> {
 /// differ; a NaN never passes the check, so it is never a key).
 fn same_wall<F: Float>(a: &ss_wall<F>, b: &ss_wall<F>) -> bool {
     let bits = |w: &ss_wall<F>| {
-        [w.point, w.normal, w.velocity].map(|v| [v.x, v.y, v.z].map(|x| x.to_f64().to_bits()))
+        let vectors = [w.point, w.direction, w.velocity].map(|v| [v.x, v.y, v.z]);
+        let [p, d, v] = vectors.map(|v| v.map(|x| x.to_f64().to_bits()));
+        (p, d, v, [w.radius, w.spin].map(|x| x.to_f64().to_bits()))
     };
     bits(a) == bits(b)
 }
@@ -357,7 +366,7 @@ unsafe fn bound_wall<F: Float>(
     };
     let plane = match bound.wall {
         Some((given, plane)) if same_wall(&given, wall) => plane,
-        _ => match plane_of(wall) {
+        _ => match wall_of(wall) {
             Ok(plane) => {
                 bound.wall = Some((*wall, plane));
                 plane

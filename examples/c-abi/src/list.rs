@@ -386,7 +386,7 @@ where
         work.walls.clear();
         for w in 0..walls.count {
             // SAFETY: `count` walls (the caller's promise).
-            match crate::plane_of(unsafe { &*walls.walls.add(w) }) {
+            match crate::wall_of(unsafe { &*walls.walls.add(w) }) {
                 Ok(wall) => work.walls.push(soft_sphere::MaterialWall {
                     wall,
                     material: walls.material,

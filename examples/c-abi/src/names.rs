@@ -131,7 +131,9 @@ pub extern "C" fn ss_contact_error_text(code: i32) -> *const c_char {
         SS_ERR_NON_FINITE_INPUT => b"a position, velocity, radius, mass, or force or torque to add to, is not finite\0",
         SS_ERR_NON_POSITIVE_RADIUS => b"a radius is not positive\0",
         SS_ERR_NON_POSITIVE_MASS => b"a mass is not positive\0",
-        SS_ERR_COINCIDENT_CENTRES => b"the two centres coincide\0",
+        SS_ERR_COINCIDENT_CENTRES => {
+            b"the two centres coincide, or a sphere wider than a cylinder wall is on its axis\0"
+        }
         SS_ERR_NON_FINITE_RESULT => b"the contact force overflowed\0",
         SS_ERR_PAST_STABLE_STEP => {
             b"the contact is stiffer than the time step was checked for (past its accuracy or stability limit: shorten the time step, or for a Hertz law declare a faster impact)\0"

@@ -185,7 +185,7 @@ pub struct ss_loads<F> {
     pub pair_force: *mut F,
 }
 
-/// Plane walls for `ss_table_evaluate_walls_*`, all of one material of the table, and each
+/// Walls (planes or cylinders) for `ss_table_evaluate_walls_*`, all of one material of the table, and each
 /// atom's state against each: atom `k`'s against wall `w` is the `ss_table_state_values_*`
 /// numbers from `states + k * stride + w * wall_stride`.
 #[repr(C)]

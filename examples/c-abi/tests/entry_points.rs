@@ -80,16 +80,33 @@ fn state_bits(s: &ss_state<f64>) -> [u64; 3] {
 
 #[test]
 fn bound_calls_give_the_shared_law_bits() {
+    let floor = ss_wall {
+        point: v(0.0, 0.0, 0.0),
+        direction: v(0.0, 0.0, 1.0),
+        velocity: v(0.0, 0.0, 0.0),
+        ..ss_wall::default()
+    };
+    // A floor, a moving ceiling, a turning drum along x whose lowest line is the floor's, and a
+    // drum about the floor's own normal (the spheres far inside it): the bound law's memo of
+    // the last wall tells each from the others.
     let walls = [
-        ss_wall {
-            point: v(0.0, 0.0, 0.0),
-            normal: v(0.0, 0.0, 1.0),
-            velocity: v(0.0, 0.0, 0.0),
-        },
+        floor,
         ss_wall {
             point: v(0.0, 0.0, 1.98e-3),
-            normal: v(0.0, -0.0, -2.0),
+            direction: v(0.0, -0.0, -2.0),
             velocity: v(0.01, 0.0, 0.0),
+            ..ss_wall::default()
+        },
+        ss_wall {
+            point: v(0.0, 0.0, 0.5),
+            direction: v(1.0, 0.0, 0.0),
+            radius: 0.5,
+            spin: 0.2,
+            ..floor
+        },
+        ss_wall {
+            radius: 0.5,
+            ..floor
         },
     ];
     for model in MODELS {
@@ -111,7 +128,7 @@ fn bound_calls_give_the_shared_law_bits() {
             let z = 1.0e-3 - 0.02e-3 * random.unit();
             let i = sphere(&mut random, v(0.0, 0.0, z));
             let j = sphere(&mut random, v(dir[0], dir[1], z + dir[2]));
-            let wall = &walls[usize::from(random.unit() > 0.5)];
+            let wall = &walls[(4.0 * random.unit()) as usize % 4];
             let (mut shared, mut through_bound) = (ss_state::default(), ss_state::default());
             let (mut wall_shared, mut wall_bound) = (ss_state::default(), ss_state::default());
             for _ in 0..50 {
@@ -221,8 +238,9 @@ fn bad_input_to_a_bound_law_has_its_code_and_changes_nothing() {
     let good_j = sphere(&mut random, v(1.9e-3, 0.0, 1.0e-3));
     let floor = ss_wall {
         point: v(0.0, 0.0, 0.0),
-        normal: v(0.0, 0.0, 1.0),
+        direction: v(0.0, 0.0, 1.0),
         velocity: v(0.0, 0.0, 0.0),
+        ..ss_wall::default()
     };
     let spring = ss_state {
         displacement: v(1.0e-6, -2.0e-6, 0.0),
@@ -272,7 +290,7 @@ fn bad_input_to_a_bound_law_has_its_code_and_changes_nothing() {
     // A bad wall is refused, also right after a good one was remembered, and is not remembered.
     let bad_walls = [
         ss_wall {
-            normal: v(0.0, 0.0, 0.0),
+            direction: v(0.0, 0.0, 0.0),
             ..floor
         },
         ss_wall {
@@ -281,6 +299,27 @@ fn bad_input_to_a_bound_law_has_its_code_and_changes_nothing() {
         },
         ss_wall {
             point: v(0.0, f64::INFINITY, 0.0),
+            ..floor
+        },
+        // A cylinder's radius negative or not finite, a spin not finite.
+        ss_wall {
+            radius: -0.1,
+            ..floor
+        },
+        ss_wall {
+            radius: f64::NAN,
+            ..floor
+        },
+        ss_wall {
+            radius: f64::INFINITY,
+            ..floor
+        },
+        ss_wall {
+            spin: f64::NAN,
+            ..floor
+        },
+        ss_wall {
+            spin: f64::NEG_INFINITY,
             ..floor
         },
     ];
@@ -450,41 +489,58 @@ fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
     sphere.velocity = Vec3::new(0.2, 0.0, -0.1);
     let floor = ss_wall {
         point: v(0.0, 0.0, 0.0),
-        normal: v(0.0, 0.0, 1.0),
+        direction: v(0.0, 0.0, 1.0),
         velocity: v(0.0, 0.0, 0.0),
+        ..ss_wall::default()
     };
-    let wall = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
-    let mut ours = MindlinSpring::default();
-    let mut theirs = ss_state::default();
-    for _ in 0..3 {
-        let mut out = ss_forces::default();
-        let c_sphere = ss_sphere {
-            position: v(sphere.position.x, sphere.position.y, sphere.position.z),
-            velocity: v(sphere.velocity.x, sphere.velocity.y, sphere.velocity.z),
-            angular_velocity: v(0.0, 0.0, 0.0),
-            radius: sphere.radius,
-            mass: sphere.mass,
-        };
-        // SAFETY: valid pointers.
-        assert_eq!(
-            unsafe { ss_sphere_wall_f64(law, &c_sphere, &floor, &mut theirs, &mut out) },
-            SS_OK
-        );
-        let Ok(Interaction::Touching(f)) = rust.sphere_wall(&sphere, &wall, &mut ours, dt) else {
-            panic!("touching")
-        };
-        // The C ABI reports the sphere's force as the one on j.
-        assert_eq!(out.normal_force.to_bits(), f.normal_force.to_bits());
-        assert_eq!(out.force_on_j.x.to_bits(), f.force_on_i().x.to_bits());
-        assert_eq!(theirs.spring_force.x.to_bits(), ours.force.x.to_bits());
-        assert_eq!(
-            theirs.contact_radius.to_bits(),
-            ours.contact_radius.to_bits()
-        );
-        assert_eq!(
-            theirs.displacement.x, 0.0,
-            "the linear laws' field stays unused"
-        );
+    let plane = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    // A turning drum about an axis along x whose lowest line is the floor's.
+    let drum = ss_wall {
+        point: v(0.0, 0.0, 0.5),
+        direction: v(2.0, 0.0, 0.0),
+        radius: 0.5,
+        spin: 3.0,
+        ..floor
+    };
+    let turning =
+        soft_sphere::Wall::cylinder(Vec3::new(0.0, 0.0, 0.5), Vec3::new(2.0, 0.0, 0.0), 0.5)
+            .and_then(|w| w.with_spin(3.0))
+            .unwrap();
+    for (floor, wall) in [(floor, plane), (drum, turning)] {
+        let mut ours = MindlinSpring::default();
+        let mut theirs = ss_state::default();
+        for _ in 0..3 {
+            let mut out = ss_forces::default();
+            let c_sphere = ss_sphere {
+                position: v(sphere.position.x, sphere.position.y, sphere.position.z),
+                velocity: v(sphere.velocity.x, sphere.velocity.y, sphere.velocity.z),
+                angular_velocity: v(0.0, 0.0, 0.0),
+                radius: sphere.radius,
+                mass: sphere.mass,
+            };
+            // SAFETY: valid pointers.
+            assert_eq!(
+                unsafe { ss_sphere_wall_f64(law, &c_sphere, &floor, &mut theirs, &mut out) },
+                SS_OK
+            );
+            let Ok(Interaction::Touching(f)) = rust.sphere_wall(&sphere, &wall, &mut ours, dt)
+            else {
+                panic!("touching")
+            };
+            // The C ABI reports the sphere's force as the one on j.
+            assert_eq!(out.normal_force.to_bits(), f.normal_force.to_bits());
+            assert_eq!(out.force_on_j.x.to_bits(), f.force_on_i().x.to_bits());
+            assert_eq!(theirs.spring_force.x.to_bits(), ours.force.x.to_bits());
+            assert_eq!(
+                theirs.contact_radius.to_bits(),
+                ours.contact_radius.to_bits()
+            );
+            assert_eq!(
+                theirs.displacement.x, 0.0,
+                "the linear laws' field stays unused"
+            );
+            assert_eq!(out.torque_on_j.y.to_bits(), f.torque_on_i.y.to_bits());
+        }
     }
     let mut duration = 0.0;
     // SAFETY: valid pointers.
@@ -586,5 +642,39 @@ fn contact_duration_follows_the_models_family_and_refuses_unknown_codes() {
             (SS_ERR_UNKNOWN_MODEL, -1.0),
             "code {unknown}"
         );
+    }
+}
+
+/// `ss_stability_limit_*` gives the step at which `ss_law_new_*` starts to refuse a law as
+/// unstable, whatever step the parameters hold (a host asks it after its step was refused).
+#[test]
+fn the_stability_limit_is_where_the_constructor_starts_to_refuse() {
+    for model in MODELS {
+        for step in [1.0e-6, 1.0, f64::NAN, 0.0] {
+            let given = ss_params {
+                time_step: step,
+                ..params(model)
+            };
+            let mut limit = 0.0;
+            // SAFETY: valid pointers.
+            let code = unsafe { ss_stability_limit_f64(&given, &mut limit) };
+            assert_eq!(code, SS_OK, "model {model}, step {step}");
+            let new_at = |time_step: f64| {
+                let mut law = null_mut();
+                let p = ss_params {
+                    time_step,
+                    ..params(model)
+                };
+                // SAFETY: valid pointers.
+                let code = unsafe { ss_law_new_f64(&p, &mut law) };
+                // SAFETY: from ss_law_new_f64 (null when refused).
+                unsafe { ss_law_free_f64(law) };
+                code
+            };
+            assert_eq!(new_at(limit), SS_ERR_UNSTABLE_TIME_STEP, "model {model}");
+            // Just below it, stable (past the accuracy limit, which is lower).
+            let below = f64::from_bits(limit.to_bits() - 1);
+            assert_eq!(new_at(below), SS_ERR_INACCURATE_TIME_STEP, "model {model}");
+        }
     }
 }

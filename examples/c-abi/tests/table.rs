@@ -1573,19 +1573,20 @@ fn frictionless_tables_ignore_the_tangential_coefficients() {
 /// atom's forces summed wall by wall; the atoms not selected, and the ghosts, untouched.
 #[test]
 fn walls_give_the_single_wall_calls_bits() {
-    let walls = [
+    let planes = [
         ss_wall {
             point: ss_vec3 {
                 x: 0.0,
                 y: 0.0,
                 z: -0.9e-3,
             },
-            normal: ss_vec3 {
+            direction: ss_vec3 {
                 x: 0.0,
                 y: 0.0,
                 z: 1.0,
             },
             velocity: ss_vec3::default(),
+            ..ss_wall::default()
         },
         ss_wall {
             point: ss_vec3 {
@@ -1593,7 +1594,7 @@ fn walls_give_the_single_wall_calls_bits() {
                 y: 0.0,
                 z: 4.7e-3,
             },
-            normal: ss_vec3 {
+            direction: ss_vec3 {
                 x: 0.0,
                 y: 0.0,
                 z: -2.0,
@@ -1603,141 +1604,162 @@ fn walls_give_the_single_wall_calls_bits() {
                 y: 0.0,
                 z: 0.0,
             },
+            ..ss_wall::default()
         },
     ];
-    for model in [SS_MODEL_AA, SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_STATELESS] {
-        let table = table(model);
-        assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
-        let values = values_of(model);
-        let (stride, wall_stride) = (16, 7);
-        let mut host = Host::new(41 + model as u64, 1);
-        let n = host.radius.len();
-        let mut random = Xorshift::new(5);
-        let mut states: Vec<f64> = (0..n * stride)
-            .map(|_| 1e-7 * (random.unit() - 0.5))
-            .collect();
-        let selected: Vec<i32> = (0..n)
-            .map(|k| if k % 3 == 0 { 0b100 } else { 0b010 })
-            .collect();
-        let mut expected = host.clone();
-        let mut expected_states = states.clone();
-        let mut report = ss_list_report::default();
-        let atoms = ss_atoms {
-            count: n,
-            owned: host.owned,
-            position: host.position.as_ptr(),
-            velocity: host.velocity.as_ptr(),
-            angular_velocity: host.spin.as_ptr(),
-            radius: host.radius.as_ptr(),
-            mass: host.mass.as_ptr(),
-            types: host.types.as_ptr(),
-            first_type: 1,
-        };
-        let ss_walls_of = |states: &mut Vec<f64>| ss_walls {
-            count: 2,
-            walls: walls.as_ptr(),
-            material: 0,
-            states: states.as_mut_ptr(),
-            stride,
-            wall_stride,
-            selected: selected.as_ptr(),
-            bit: 0b010,
-        };
-        let loads = ss_loads {
-            force: host.force.as_mut_ptr(),
-            torque: host.torque.as_mut_ptr(),
-            newton: 0,
-            pair_force: null_mut(),
-        };
-        // SAFETY: valid pointers throughout, as long as they say.
-        let code = unsafe {
-            ss_table_evaluate_walls_f64(
-                table,
-                &atoms,
-                &ss_walls_of(&mut states),
-                &loads,
-                1,
-                &mut report,
-            )
-        };
-        assert_eq!(code, SS_OK, "model {model}");
-        let mut touching = 0;
-        for k in (0..expected.owned).filter(|k| selected[*k] & 0b010 != 0) {
-            let params = reference_params(model, expected.types[k] as usize - 1, 0);
-            let mut law = null_mut();
-            // SAFETY: valid pointers.
-            assert_eq!(unsafe { ss_law_new_f64(&params, &mut law) }, SS_OK);
-            let (mut force, mut torque) = ([0.0; 3], [0.0; 3]);
-            for (w, wall) in walls.iter().enumerate() {
-                let at = k * stride + w * wall_stride;
-                let stored = &mut expected_states[at..at + values];
-                let mut state = state_of(stored);
-                let mut out = ss_forces::default();
+    // The floor and a turning drum about the columns that the corner columns touch.
+    let drum = ss_wall {
+        point: ss_vec3 {
+            x: 2.85e-3,
+            y: 2.85e-3,
+            z: 0.0,
+        },
+        direction: ss_vec3 {
+            x: 0.0,
+            y: 0.0,
+            z: 1.0,
+        },
+        velocity: ss_vec3::default(),
+        radius: 4.95e-3,
+        spin: -40.0,
+    };
+    let turning = [planes[0], drum];
+    for walls in [planes, turning] {
+        for model in [SS_MODEL_AA, SS_MODEL_HERTZ_AA_LUDING, SS_MODEL_STATELESS] {
+            let table = table(model);
+            assert_eq!(prepare(table, [1e-5; 3]).0, SS_OK);
+            let values = values_of(model);
+            let (stride, wall_stride) = (16, 7);
+            let mut host = Host::new(41 + model as u64, 1);
+            let n = host.radius.len();
+            let mut random = Xorshift::new(5);
+            let mut states: Vec<f64> = (0..n * stride)
+                .map(|_| 1e-7 * (random.unit() - 0.5))
+                .collect();
+            let selected: Vec<i32> = (0..n)
+                .map(|k| if k % 3 == 0 { 0b100 } else { 0b010 })
+                .collect();
+            let mut expected = host.clone();
+            let mut expected_states = states.clone();
+            let mut report = ss_list_report::default();
+            let atoms = ss_atoms {
+                count: n,
+                owned: host.owned,
+                position: host.position.as_ptr(),
+                velocity: host.velocity.as_ptr(),
+                angular_velocity: host.spin.as_ptr(),
+                radius: host.radius.as_ptr(),
+                mass: host.mass.as_ptr(),
+                types: host.types.as_ptr(),
+                first_type: 1,
+            };
+            let ss_walls_of = |states: &mut Vec<f64>| ss_walls {
+                count: 2,
+                walls: walls.as_ptr(),
+                material: 0,
+                states: states.as_mut_ptr(),
+                stride,
+                wall_stride,
+                selected: selected.as_ptr(),
+                bit: 0b010,
+            };
+            let loads = ss_loads {
+                force: host.force.as_mut_ptr(),
+                torque: host.torque.as_mut_ptr(),
+                newton: 0,
+                pair_force: null_mut(),
+            };
+            // SAFETY: valid pointers throughout, as long as they say.
+            let code = unsafe {
+                ss_table_evaluate_walls_f64(
+                    table,
+                    &atoms,
+                    &ss_walls_of(&mut states),
+                    &loads,
+                    1,
+                    &mut report,
+                )
+            };
+            assert_eq!(code, SS_OK, "model {model}");
+            let (mut touching, mut on_each) = (0, [0; 2]);
+            for k in (0..expected.owned).filter(|k| selected[*k] & 0b010 != 0) {
+                let params = reference_params(model, expected.types[k] as usize - 1, 0);
+                let mut law = null_mut();
                 // SAFETY: valid pointers.
-                let code = unsafe {
-                    ss_sphere_wall_f64(law, &expected.sphere(k), wall, &mut state, &mut out)
-                };
-                assert_eq!(code, SS_OK);
-                store(&state, stored);
-                touching += out.touching as usize;
-                if out.touching == 1 {
-                    let (f, t) = (out.force_on_j, out.torque_on_j);
-                    for (c, (fc, tc)) in
-                        [(f.x, t.x), (f.y, t.y), (f.z, t.z)].into_iter().enumerate()
-                    {
-                        force[c] += fc;
-                        torque[c] += tc;
+                assert_eq!(unsafe { ss_law_new_f64(&params, &mut law) }, SS_OK);
+                let (mut force, mut torque) = ([0.0; 3], [0.0; 3]);
+                for (w, wall) in walls.iter().enumerate() {
+                    let at = k * stride + w * wall_stride;
+                    let stored = &mut expected_states[at..at + values];
+                    let mut state = state_of(stored);
+                    let mut out = ss_forces::default();
+                    // SAFETY: valid pointers.
+                    let code = unsafe {
+                        ss_sphere_wall_f64(law, &expected.sphere(k), wall, &mut state, &mut out)
+                    };
+                    assert_eq!(code, SS_OK);
+                    store(&state, stored);
+                    touching += out.touching as usize;
+                    on_each[w] += out.touching as usize;
+                    if out.touching == 1 {
+                        let (f, t) = (out.force_on_j, out.torque_on_j);
+                        for (c, (fc, tc)) in
+                            [(f.x, t.x), (f.y, t.y), (f.z, t.z)].into_iter().enumerate()
+                        {
+                            force[c] += fc;
+                            torque[c] += tc;
+                        }
                     }
                 }
+                // SAFETY: from ss_law_new_f64.
+                unsafe { ss_law_free_f64(law) };
+                for c in 0..3 {
+                    expected.force[3 * k + c] += force[c];
+                    expected.torque[3 * k + c] += torque[c];
+                }
             }
-            // SAFETY: from ss_law_new_f64.
-            unsafe { ss_law_free_f64(law) };
-            for c in 0..3 {
-                expected.force[3 * k + c] += force[c];
-                expected.torque[3 * k + c] += torque[c];
-            }
+            assert!(
+                on_each.iter().all(|&n| n > 2),
+                "model {model}: each wall must touch: {on_each:?}"
+            );
+            assert_eq!(report.contacts, touching);
+            assert_eq!(bits(&host.force), bits(&expected.force), "model {model}");
+            assert_eq!(bits(&host.torque), bits(&expected.torque), "model {model}");
+            assert_eq!(bits(&states), bits(&expected_states), "model {model}");
+            // A wall whose normal is zero: refused, nothing written.
+            let before = (host.force.clone(), states.clone());
+            let bad = [ss_wall::default()];
+            let bad_walls = ss_walls {
+                walls: bad.as_ptr(),
+                count: 1,
+                ..ss_walls_of(&mut states)
+            };
+            // SAFETY: as above.
+            let code = unsafe {
+                ss_table_evaluate_walls_f64(table, &atoms, &bad_walls, &loads, 1, &mut report)
+            };
+            assert_eq!(code, SS_ERR_BAD_WALL);
+            assert_eq!((host.force.clone(), states.clone()), before);
+            // A NaN already in an owned atom's force: refused, naming the atom, nothing written.
+            // SAFETY: atom 2's force, inside the array.
+            unsafe { *loads.force.add(3 * 2 + 1) = f64::NAN };
+            let before = (bits(&host.force), bits(&states));
+            // SAFETY: as above.
+            let code = unsafe {
+                ss_table_evaluate_walls_f64(
+                    table,
+                    &atoms,
+                    &ss_walls_of(&mut states),
+                    &loads,
+                    1,
+                    &mut report,
+                )
+            };
+            assert_eq!((code, report.atoms), (SS_ERR_NON_FINITE_INPUT, [2, -1]));
+            assert_eq!((bits(&host.force), bits(&states)), before);
+            // SAFETY: from ss_table_new_f64.
+            unsafe { ss_table_free_f64(table) };
         }
-        assert!(
-            touching > 8,
-            "model {model}: the walls must touch: {touching}"
-        );
-        assert_eq!(report.contacts, touching);
-        assert_eq!(bits(&host.force), bits(&expected.force), "model {model}");
-        assert_eq!(bits(&host.torque), bits(&expected.torque), "model {model}");
-        assert_eq!(bits(&states), bits(&expected_states), "model {model}");
-        // A wall whose normal is zero: refused, nothing written.
-        let before = (host.force.clone(), states.clone());
-        let bad = [ss_wall::default()];
-        let bad_walls = ss_walls {
-            walls: bad.as_ptr(),
-            count: 1,
-            ..ss_walls_of(&mut states)
-        };
-        // SAFETY: as above.
-        let code = unsafe {
-            ss_table_evaluate_walls_f64(table, &atoms, &bad_walls, &loads, 1, &mut report)
-        };
-        assert_eq!(code, SS_ERR_BAD_WALL);
-        assert_eq!((host.force.clone(), states.clone()), before);
-        // A NaN already in an owned atom's force: refused, naming the atom, nothing written.
-        // SAFETY: atom 2's force, inside the array.
-        unsafe { *loads.force.add(3 * 2 + 1) = f64::NAN };
-        let before = (bits(&host.force), bits(&states));
-        // SAFETY: as above.
-        let code = unsafe {
-            ss_table_evaluate_walls_f64(
-                table,
-                &atoms,
-                &ss_walls_of(&mut states),
-                &loads,
-                1,
-                &mut report,
-            )
-        };
-        assert_eq!((code, report.atoms), (SS_ERR_NON_FINITE_INPUT, [2, -1]));
-        assert_eq!((bits(&host.force), bits(&states)), before);
-        // SAFETY: from ss_table_new_f64.
-        unsafe { ss_table_free_f64(table) };
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "fmt/format.h"
@@ -26,26 +27,27 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), model(-1), rolling(SS_ROLLING_NONE), table(nullptr),
     impact_speed(0.0), coarse(false), warned_inaccurate(false), history(nullptr), advance(true),
     built_radius(0.0), built_inertia(0.0), types(1), mixed(0), motion(NONE), motion_axis(0),
-    amplitude(0.0), omega(0.0), shear_speed(0.0), time_origin(update->ntimestep)
+    amplitude(0.0), omega(0.0), shear_speed(0.0), time_origin(update->ntimestep),
+    cylinder(false), cylinder_radius(0.0)
 {
   const std::string style = "fix wall/soft/sphere";
   const char *usage =
       "Illegal fix wall/soft/sphere command: expected LAW and five numbers, [rolling mu_r k_r "
-      "eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI, [wiggle x|y|z A PERIOD | "
-      "shear x|y|z V]";
-  // The plane and its bounds follow the law's keywords; the walls' motion follows them.
-  const auto is_plane = [](const char *word) {
+      "eta_r], [impact V], [coarse], xplane|yplane|zplane LO HI | zcylinder R, [wiggle x|y|z A "
+      "PERIOD | shear x|y|z V]";
+  // The wall and its bounds (or radius) follow the law's keywords; the wall's motion follows
+  // them.
+  const auto is_wall = [](const char *word) {
     return std::strcmp(word, "xplane") == 0 || std::strcmp(word, "yplane") == 0 ||
-        std::strcmp(word, "zplane") == 0;
+        std::strcmp(word, "zplane") == 0 || std::strcmp(word, "zcylinder") == 0;
   };
   int plane_at = 9;
-  while (plane_at < narg && !is_plane(arg[plane_at])) plane_at++;
-  if (narg < 12) error->all(FLERR, usage);
-  if (plane_at + 3 > narg)
-    error->all(FLERR,
-               "{}: no plane wall given (xplane, yplane or zplane LO HI; the kernel's walls are "
-               "planes: zcylinder is not supported)",
-               style);
+  while (plane_at < narg && !is_wall(arg[plane_at])) plane_at++;
+  if (narg < 11) error->all(FLERR, usage);
+  cylinder = plane_at < narg && std::strcmp(arg[plane_at], "zcylinder") == 0;
+  const int wall_words = cylinder ? 2 : 3;
+  if (plane_at + wall_words > narg)
+    error->all(FLERR, "{}: no wall given (xplane, yplane or zplane LO HI, or zcylinder R)", style);
   SoftSphere::require_spheres(lmp, style);
   model = SoftSphere::model(lmp, style, arg[3]);
   coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
@@ -72,15 +74,27 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
                style);
   const std::string plane = arg[plane_at];
   axis = plane == "xplane" ? 0 : plane == "yplane" ? 1 : 2;
-  for (int w = 0; w < WALLS; w++) {
-    const char *value = arg[plane_at + 1 + w];
-    present[w] = std::strcmp(value, "NULL") != 0;
-    position[w] = present[w] ? utils::numeric(FLERR, value, false, lmp) : 0.0;
+  if (cylinder) {
+    // One wall, about the z axis (x = y = 0), as fix wall/gran's zcylinder.
+    cylinder_radius = utils::numeric(FLERR, arg[plane_at + 1], false, lmp);
+    if (!(cylinder_radius > 0.0) || !std::isfinite(cylinder_radius))
+      error->all(FLERR, "{}: zcylinder R: the radius must be a positive number", style);
+    if (domain->xperiodic || domain->yperiodic)
+      error->all(FLERR, "{}: zcylinder needs x and y not periodic", style);
+    present[0] = 1;
+    present[1] = 0;
+    position[0] = position[1] = 0.0;
+  } else {
+    for (int w = 0; w < WALLS; w++) {
+      const char *value = arg[plane_at + 1 + w];
+      present[w] = std::strcmp(value, "NULL") != 0;
+      position[w] = present[w] ? utils::numeric(FLERR, value, false, lmp) : 0.0;
+    }
+    if (!present[0] && !present[1]) error->all(FLERR, "{}: both walls are NULL", style);
+    if (present[0] && present[1] && position[0] >= position[1])
+      error->all(FLERR, "{}: LO must lie below HI", style);
   }
-  if (!present[0] && !present[1]) error->all(FLERR, "{}: both walls are NULL", style);
-  if (present[0] && present[1] && position[0] >= position[1])
-    error->all(FLERR, "{}: LO must lie below HI", style);
-  motion_of(style, plane_at + 3, narg, arg);
+  motion_of(style, plane_at + wall_words, narg, arg);
 
   // The kernel checks the law here already, so a bad parameter stops the input script at this
   // command.
@@ -95,9 +109,11 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
 }
 
-/* The keywords after the plane: wiggle DIM A PERIOD (the walls at LO + A (1 - cos(w t)),
+/* The keywords after the wall: wiggle DIM A PERIOD (the walls at LO + A (1 - cos(w t)),
  * moving at A w sin(w t) along DIM, w = 2 pi / PERIOD, t from the step the fix was defined at,
- * as fix wall/gran) or shear DIM V (the walls moving at V along DIM, in their plane). */
+ * as fix wall/gran; a cylinder along its axis only) or shear DIM V (planes moving at V along
+ * DIM, in their plane; a cylinder moving at V along its axis for z, turning about it at surface
+ * speed V for x or y, as fix wall/gran's: clockwise seen from +z for V > 0). */
 void FixWallSoftSphere::motion_of(const std::string &style, int k, int narg, char **arg)
 {
   const auto direction = [&](const char *keyword, const char *word) {
@@ -119,6 +135,9 @@ void FixWallSoftSphere::motion_of(const std::string &style, int k, int narg, cha
         error->all(FLERR, "{}: wiggle: the amplitude must be a finite number", style);
       if (!(period > 0.0) || !std::isfinite(period))
         error->all(FLERR, "{}: wiggle: the period must be a positive number", style);
+      if (cylinder && motion_axis != 2)
+        error->all(FLERR, "{}: wiggle {}: a zcylinder wiggles along its axis only (wiggle z)",
+                   style, arg[k + 1]);
       omega = MathConst::MY_2PI / period;
       k += 4;
     } else if (std::strcmp(arg[k], "shear") == 0 && k + 2 < narg) {
@@ -127,14 +146,14 @@ void FixWallSoftSphere::motion_of(const std::string &style, int k, int narg, cha
       shear_speed = utils::numeric(FLERR, arg[k + 2], false, lmp);
       if (!std::isfinite(shear_speed))
         error->all(FLERR, "{}: shear: the speed must be a finite number", style);
-      if (motion_axis == axis)
+      if (!cylinder && motion_axis == axis)
         error->all(FLERR,
                    "{}: shear {}: a plane shears in its own plane, not along its normal (wiggle "
                    "moves it along the normal)",
                    style, arg[k + 1]);
       k += 3;
     } else
-      error->all(FLERR, "{}: unknown keyword '{}' after the plane (wiggle x|y|z A PERIOD, shear "
+      error->all(FLERR, "{}: unknown keyword '{}' after the wall (wiggle x|y|z A PERIOD, shear "
                         "x|y|z V)",
                  style, arg[k]);
   }
@@ -314,9 +333,19 @@ void FixWallSoftSphere::forces()
     if (!present[w]) continue;
     if (first < 0) first = w;
     std::memset(&walls[count], 0, sizeof(ss_wall_f64));
-    (&walls[count].point.x)[axis] = position[w] + offset;
-    (&walls[count].normal.x)[axis] = w == 0 ? 1.0 : -1.0;
-    (&walls[count].velocity.x)[motion_axis] = speed;
+    if (cylinder) {
+      // The axis along z through x = y = 0; shear x or y turns it (V = -spin R).
+      walls[count].direction.z = 1.0;
+      walls[count].radius = cylinder_radius;
+      if (motion == SHEAR && motion_axis != 2)
+        walls[count].spin = -shear_speed / cylinder_radius;
+      else
+        walls[count].velocity.z = speed;
+    } else {
+      (&walls[count].point.x)[axis] = position[w] + offset;
+      (&walls[count].direction.x)[axis] = w == 0 ? 1.0 : -1.0;
+      (&walls[count].velocity.x)[motion_axis] = speed;
+    }
     count++;
   }
   ss_atoms_f64 atoms;

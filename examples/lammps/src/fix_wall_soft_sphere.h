@@ -1,6 +1,7 @@
-/* fix ID GROUP wall/soft/sphere LAW five-numbers [rolling mu_r k_r eta_r] [impact V]
- *     {x,y,z}plane LO HI
- * Flat walls at LO and HI (either may be NULL) that act on the group's spheres with the
+/* fix ID GROUP wall/soft/sphere LAW five-numbers [rolling mu_r k_r eta_r] [impact V] [coarse]
+ *     {x,y,z}plane LO HI | zcylinder R   [wiggle DIM A PERIOD | shear DIM V]
+ * Flat walls at LO and HI (either may be NULL), or the inside of a cylinder of radius R about the
+ * z axis (turning when sheared along x or y), that act on the group's spheres with the
  * soft-sphere kernel's law: a linear law (k_n e k_t eta_ratio mu) or a Hertz-Mindlin law (E nu e
  * eta_ratio mu; impact V declares the fastest impact the time step is checked for), with the
  * elastic-plastic rolling resistance when asked. The five numbers are the wall's own material:
@@ -47,7 +48,7 @@ class FixWallSoftSphere : public Fix {
   void restart(char *) override;
 
  private:
-  static constexpr int WALLS = 2;    // LO and HI
+  static constexpr int WALLS = 2;    // LO and HI (a zcylinder: the first only)
   enum { NONE, WIGGLE, SHEAR };
   static constexpr int STATE = 7;    // the most numbers a law keeps per contact
   static constexpr int VALUES = STATE * WALLS;
@@ -64,6 +65,8 @@ class FixWallSoftSphere : public Fix {
   double omega;
   double shear_speed;    // shear: the walls' speed (m/s)
   bigint time_origin;    // the step the wiggle starts from (kept in restart files)
+  bool cylinder;         // zcylinder: one wall, the inside of a cylinder about the z axis
+  double cylinder_radius;
   double impact_speed;   // Hertz laws: the declared fastest impact (m/s)
   bool coarse;           // the step taken knowingly past the accuracy limit
   bool warned_inaccurate;    // the coarse step's first inaccurate contacts reported
