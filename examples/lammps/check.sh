@@ -1146,7 +1146,9 @@ bad_pairs "walls that wiggle and shear" "wiggle or shear, not both" \
 # its weight by 6e-5 rad). The same drum wiggling along its axis (A = 20 um, period 20 ms) rolls
 # the sphere along with it (A w^2 = 2 m/s^2 below mu g): its centre follows 2/7 of the surface's
 # motion, 2/7 of 2 A after 1.5 periods (within 1 %), also written to a restart file at 0.75
-# periods and read back. Native fix wall/gran beside each.
+# periods and read back. Native fix wall/gran beside each (its turning zcylinder, in this
+# LAMMPS version, also moves its wall at V along x or y and sums that over the atoms: printed,
+# not compared).
 drum_deck() { # WALL-ARGUMENTS (zcylinder R [motion]), WALL (ours | native), STEPS, GRAVITY (0|1), X, VX, [restart|resume]
   setup=("boundary f f p" "region box block $(python3 -c "print($5 - 0.002, $5 + 0.002)") -0.01 0.01 -0.01 0.01"
     "create_box 1 box" "create_atoms 1 single $5 0 0" "velocity all set $6 0 0")
@@ -1201,8 +1203,15 @@ bad_pairs "a zcylinder of no radius" "zcylinder R: the radius must be a positive
 bad_pairs "a zcylinder wiggling across its axis" "a zcylinder wiggles along its axis only" \
   "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" \
   "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.004 wiggle x 1e-5 0.01"
+bad_pairs "an atom outside its zcylinder" "atom 2 is outside the zcylinder" \
+  "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" \
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.0075"
+bad_pairs "a zcylinder with no radius" "zcylinder needs R" \
+  "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" \
+  "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder"
 bad_pairs "a sphere wider than its zcylinder on the axis" "atom 1 against the wall: the two centres coincide, or a sphere wider than a cylinder wall is on its axis" \
   "pair_style zero 0.001" "pair_coeff * *" "change_box all boundary f f p" "set atom 1 x 0 y 0" \
+  "set atom 2 x 0 y 0 z 0.008" \
   "fix drum all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zcylinder 0.0004"
 
 echo "$passed passed, $failed failed"

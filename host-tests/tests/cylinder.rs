@@ -5,9 +5,9 @@
 //! Coulomb limit along the surface's motion, no tangential force on a sphere moving with it.
 
 use soft_sphere::{
-    CheckedSphere, ContactError, ContactLaw, Interaction, LinearAA, LinearSpringDashpot, ModelAA,
-    Parameter, ParameterError, Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall,
-    WallShape,
+    CheckedSphere, ConstantRolling, ContactError, ContactForces, ContactLaw, ElasticPlasticRolling,
+    Float, Interaction, LeverArm, LinearAA, LinearSpringDashpot, ModelAA, Parameter,
+    ParameterError, Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, WallShape,
 };
 
 /// `k_n` 1e4 N/m, `e` 0.8, `k_t` 3e3 N/m, tangential dashpot ratio 0.5, `mu` 0.4.
@@ -40,7 +40,7 @@ fn pressed(wall: &Wall<f64>, across: Vec3<f64>, depth: f64, along: f64) -> Spher
     Sphere::solid(centre, SPHERE_RADIUS, 2500.0)
 }
 
-fn touching(outcome: Result<Interaction<f64>, ContactError>) -> soft_sphere::ContactForces<f64> {
+fn touching<F: Float>(outcome: Result<Interaction<F>, ContactError>) -> ContactForces<F> {
     match outcome {
         Ok(Interaction::Touching(c)) => c,
         other => panic!("expected a contact, got {other:?}"),
@@ -182,6 +182,41 @@ fn a_sphere_moving_with_a_turning_surface_feels_no_tangential_force() {
 }
 
 #[test]
+fn a_sphere_carried_round_by_a_turning_drum_does_not_roll() {
+    // Moving rigidly with the drum (its centre at w a x (x - p), its spin w a), the sphere's
+    // contact point moves with the surface and it turns as the drum does: no slip, no rolling,
+    // so neither rolling law resists it. Spun the other way, it rolls, and is resisted. (The
+    // contact-plane lever arm puts the contact point on the surface: with the radius as the
+    // arm, the point R - delta from the centre would slip at w delta.)
+    let (wall, across, _) = drum();
+    let spin = 20.0;
+    let turning = wall.with_spin(spin).unwrap();
+    let law = law().with_lever_arm(LeverArm::ContactPlane);
+    let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
+    let mut sphere = pressed(&turning, across, 1.0e-5, 0.3);
+    let omega = turning.direction() * spin;
+    sphere.velocity = omega.cross(sphere.position - turning.point());
+    sphere.angular_velocity = omega;
+    let constant = law.with_rolling(ConstantRolling::new(0.3).unwrap());
+    let epsd = law.with_rolling(ElasticPlasticRolling::new(0.3, 1e-4, 1e-7, 1e-12).unwrap());
+    let a = touching(constant.sphere_wall(&sphere, &turning, &mut Default::default(), dt));
+    let mut state = Default::default();
+    let b = touching(epsd.sphere_wall(&sphere, &turning, &mut state, dt));
+    // The constant law's torque at its limit: mu_r R F_n.
+    let limit = 0.3 * SPHERE_RADIUS * a.normal_force;
+    for c in [a, b] {
+        let torque = c.torque_on_i.norm_squared().sqrt();
+        assert!(torque < 1e-9 * limit, "{torque:e} of {limit:e}");
+        assert!(c.slip_velocity.norm_squared().sqrt() < 1e-12);
+    }
+    sphere.angular_velocity = -omega;
+    let c = touching(constant.sphere_wall(&sphere, &turning, &mut Default::default(), dt));
+    // Against the rolling, about the axis.
+    let about_axis = c.torque_on_i.dot(turning.direction());
+    assert!(about_axis > 0.5 * limit, "{about_axis:e} of {limit:e}");
+}
+
+#[test]
 fn a_cylinder_contact_is_the_contact_against_its_tangent_plane() {
     let (wall, across, around) = drum();
     let law = law();
@@ -302,4 +337,29 @@ fn a_sphere_centred_on_the_axis_is_refused_only_when_it_reaches_the_wall() {
         Ok(Interaction::Apart)
     );
     assert_eq!(state, SpringDisplacement::default());
+}
+
+#[test]
+fn a_cylinder_in_f32_pushes_a_pressed_sphere_towards_its_axis_by_k_delta() {
+    let law: LinearAA<f32> = ContactLaw::new(
+        LinearSpringDashpot::new(1.0e4, 0.8).unwrap(),
+        ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+    );
+    let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
+    let drum = Wall::cylinder(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0), 0.05_f32).unwrap();
+    let depth = 1.0e-5_f32;
+    let sphere = Sphere::solid(
+        Vec3::new(0.0, -(0.05 - 1.0e-3 + depth), 0.2),
+        1.0e-3,
+        2500.0,
+    );
+    let c = touching(law.sphere_wall(&sphere, &drum, &mut Default::default(), dt));
+    // Positions near 0.05 m carry f32 rounding of 4e-9 m: 4e-4 of the depth.
+    assert!((c.overlap - depth).abs() < 1e-3 * depth, "{}", c.overlap);
+    let force = c.force_on_i();
+    assert!(
+        (force.y - 1.0e4 * depth).abs() < 1e-3 * 1.0e4 * depth,
+        "{force:?}"
+    );
+    assert!(force.x == 0.0 && force.z == 0.0);
 }

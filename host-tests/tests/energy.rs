@@ -375,19 +375,22 @@ fn a_sphere_sliding_on_a_floor_loses_two_sevenths_of_its_kinetic_energy_to_the_s
 }
 
 /// How a [`pour`] is set up: the lattice's vertical spacing times `squeeze` (below 0.834 the
-/// layers start pressed together), gravity, and the ceiling's height and velocity.
+/// layers start pressed together), gravity, the ceiling's height and velocity, and the floor's
+/// turning rate about the vertical through the origin (a turntable).
 #[derive(Clone, Copy)]
 struct Pour {
     squeeze: f64,
     gravity: f64,
     ceiling: (f64, f64),
+    floor_spin: f64,
 }
 
-/// Falling onto a floor; the ceiling far above.
+/// Falling onto a still floor; the ceiling far above.
 const SETTLING: Pour = Pour {
     squeeze: 0.9,
     gravity: 9.81,
     ceiling: (0.02, 0.0),
+    floor_spin: 0.0,
 };
 
 /// A pour of 150 spheres with random velocities in a 6 mm periodic box between a floor and a
@@ -433,7 +436,12 @@ fn pour_in_calls<L: Law<Float = f64>>(
         .with_velocity(-up * speed)
         .unwrap();
     let walls = [
-        wall_of(Wall::new(Vec3::ZERO, up).unwrap(), 1),
+        wall_of(
+            Wall::new(Vec3::ZERO, up)
+                .and_then(|floor| floor.with_spin(setup.floor_spin))
+                .unwrap(),
+            1,
+        ),
         wall_of(ceiling, 1),
     ];
     let domain = column.domain(0.02);
@@ -619,6 +627,7 @@ fn an_elastic_gas_pressed_together_and_squeezed_by_a_ceiling_dissipates_nothing(
         squeeze: 0.83,
         gravity: 0.0,
         ceiling: (6.0e-3, 0.02),
+        floor_spin: 0.0,
     };
     let impact = HertzImpact {
         speed: 0.5,
@@ -649,5 +658,35 @@ fn an_elastic_gas_pressed_together_and_squeezed_by_a_ceiling_dissipates_nothing(
                 "{integrator:?}, {name}: {coarse:e} -> {fine:e}"
             );
         }
+    }
+}
+
+#[test]
+fn the_balance_closes_with_a_turning_floors_drive() {
+    // A turntable floor (30 rad/s about the vertical through the origin) drags the settling
+    // bed round by friction: its drive does work along its surface's velocity under each
+    // sphere, and the balance closes with that work in it, to rounding.
+    let table = pair_and_wall(linear(0.5, 0.5), linear(0.6, 0.3));
+    let turning = Pour {
+        floor_spin: 30.0,
+        ..SETTLING
+    };
+    let energies = pour(&table, (Integrator::SymplecticEuler, turning), (4e-6, 0.04));
+    let last = energies.last().unwrap();
+    let dissipated = last.dissipated_dashpots + last.dissipated_sliding;
+    // The drive gave energy, much of it to the bed's turning (at 30 rad/s a sphere 5 mm from
+    // the axis moves at 0.15 m/s).
+    assert!(
+        last.wall_work > 0.05 * last.gravity_work && last.dissipated_sliding > 0.0,
+        "{last:?}"
+    );
+    let start = energies[0].balance();
+    for (step, energy) in energies.iter().enumerate() {
+        let drift = (energy.balance() - start).abs();
+        assert!(
+            drift < 1e-9 * (dissipated + last.wall_work),
+            "step {step}: the balance moved {drift:e} J of {dissipated:e} J dissipated, {:e} J driven",
+            last.wall_work
+        );
     }
 }

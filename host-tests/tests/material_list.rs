@@ -308,18 +308,25 @@ fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
     let drum = Wall::cylinder(axis, Vec3::new(0.0, 0.0, 1.0), 4.8e-3)
         .and_then(|w| w.with_spin(50.0))
         .unwrap();
+    // The floor turning too (a turntable about the vertical through the first column).
+    let turntable = MaterialWall {
+        wall: both[0].wall.with_spin(-30.0).unwrap(),
+        ..both[0]
+    };
     let turning = [
-        both[0],
         MaterialWall {
             wall: drum,
             material: 2,
         },
+        turntable,
     ];
     for route in ROUTES {
-        // Both walls, and the floor alone (the walls' sift reads one wall's plane once).
+        // Both walls, and the floor alone (the walls' sift reads one wall once); the drum and
+        // the turntable, and the drum alone.
         mixture_bits(route, &both);
         mixture_bits(route, &both[..1]);
         mixture_bits(route, &turning);
+        mixture_bits(route, &turning[..1]);
     }
 }
 
@@ -882,6 +889,23 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             sphere: 13,
             wall: 0,
             error: ContactError::PastStableStep
+        })
+    );
+    // A drum narrower than sphere 7, about the vertical through its centre: it reaches the wall
+    // with no normal, and is refused with its place (the spheres before it, outside the drum and
+    // so inside its wall, are evaluated).
+    let up = Vec3::new(0.0, 0.0, 1.0);
+    let narrow = [MaterialWall {
+        wall: Wall::cylinder(m.position[7], up, 0.5 * m.radius[7]).unwrap(),
+        material: 2,
+    }];
+    let dt = t.coarse_time_step(1.0e-7, &m.arrays(), &narrow).unwrap();
+    assert_eq!(
+        try_evaluate(&t, &m.arrays(), &m.pairs, &narrow, dt),
+        Err(ListError::Wall {
+            sphere: 7,
+            wall: 0,
+            error: ContactError::CoincidentCentres
         })
     );
 }

@@ -208,7 +208,7 @@ pub(crate) fn sphere_sphere<F: Float, M: MathBackend<F>>(
 }
 
 /// The contact between a checked sphere (body i) and a wall (body j), `None` when they do not
-/// overlap ([`crate::wall`]: against the plane tangent to the wall nearest the centre).
+/// overlap ([`Wall`]: against the plane tangent to the wall nearest the centre).
 ///
 /// # Errors
 /// [`ContactError::CoincidentCentres`] for an overlapping sphere centred on a cylinder's axis.
@@ -221,7 +221,8 @@ pub(crate) fn sphere_wall<F: Float>(
     if !reaches_wall(sphere.position, sphere.radius, wall) {
         return Ok(None);
     }
-    let Some((outward, distance, surface_velocity)) = wall.surface_at(sphere.position) else {
+    let Some((towards_spheres, distance, surface_velocity)) = wall.surface_at(sphere.position)
+    else {
         return Err(ContactError::CoincidentCentres);
     };
     let arm_i = match lever_arm {
@@ -230,14 +231,16 @@ pub(crate) fn sphere_wall<F: Float>(
     };
     Ok(Some(ContactFrame {
         // From the sphere into the wall.
-        normal: -outward,
+        normal: -towards_spheres,
         overlap: sphere.radius - distance,
         effective_radius: sphere.radius,
         arm_i,
         arm_j: F::ZERO,
         velocity: surface_velocity - sphere.velocity,
         angular_velocity_i: sphere.angular_velocity,
-        angular_velocity_j: Vec3::ZERO,
+        // A turning cylinder's spin lies in the tangent plane: the rolling slot sees a sphere
+        // carried round with it as not rolling.
+        angular_velocity_j: wall.angular_velocity(),
     }))
 }
 

@@ -926,7 +926,7 @@ fn next_reaching<F: Float, S: Default>(
 ) -> Option<usize> {
     let count = walls.len();
     if let [one] = walls {
-        // One wall (a floor): its plane read once, a place per sphere.
+        // One wall (a floor, a drum): read once, a place per sphere.
         let states = states.get_mut(from..).unwrap_or_default();
         let places = (from..spheres.len()).zip(states);
         for (k, state) in places {

@@ -1,12 +1,5 @@
 //! The walls a sphere meets: a plane, or the inside of a circular cylinder (a drum, a pipe), each
 //! able to translate and to turn about its own axis with its surface staying in place.
-//!
-//! A wall contact is evaluated against the plane tangent to the wall at the point nearest the
-//! sphere's centre: the normal is the wall's normal there, the overlap the sphere's radius less
-//! the centre's distance to the surface. The curvature of a cylinder is not in the contact's
-//! stiffness (the effective radius is the sphere's, as against a plane), which keeps every wall
-//! contact within the time step checked for its sphere; for a cylinder of ten sphere radii a
-//! Hertz contact's mean-curvature radius would be 5 % larger (its stiffness 2.6 %).
 
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError};
@@ -30,10 +23,19 @@ pub enum WallShape<F> {
 /// velocity) and turn about its own axis ([`Wall::with_spin`]: a turntable, a rotating drum),
 /// which moves its surface within itself. Every field is checked when it is set, so a wall is
 /// always valid and contacts never check it again.
+///
+/// A sphere meets a wall as it would meet the plane tangent to the wall at the surface point
+/// nearest its centre: the normal is the wall's there, the overlap the sphere's radius less the
+/// centre's distance to the surface, the wall's velocity its surface's there. A cylinder's
+/// curvature is not in the contact's stiffness (the effective radius is the sphere's, as
+/// against a plane), which keeps every wall contact within the time step checked for its
+/// sphere; in a cylinder of ten sphere radii a Hertz contact's mean-curvature radius would be
+/// 5 % larger, its stiffness 2.6 %. A cylinder has one side: a sphere outside it is inside its
+/// wall, and is pushed in by its whole depth.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wall<F> {
     point: Vec3<F>,
-    /// A plane's unit outward normal; a cylinder's unit axis.
+    /// A plane's unit normal towards the spheres; a cylinder's unit axis.
     direction: Vec3<F>,
     velocity: Vec3<F>,
     spin: F,
@@ -57,7 +59,7 @@ fn unit<F: Float>(point: Vec3<F>, direction: Vec3<F>) -> Result<Vec3<F>, Paramet
 }
 
 impl<F: Float> Wall<F> {
-    /// A plane wall through `point` whose outward normal (towards the spheres) is along `normal`.
+    /// A plane wall through `point` whose normal towards the spheres is along `normal`.
     /// The normal is normalised here, once, with the reference backend.
     ///
     /// # Errors
@@ -116,11 +118,11 @@ impl<F: Float> Wall<F> {
         Ok(self)
     }
 
-    /// The same wall turning at `spin` rad/s about its own axis, right-handed about
-    /// [`Wall::direction`]: a cylinder about its axis (a rotating drum), a plane about its normal
-    /// through [`Wall::point`] (a turntable). Its surface stays where it is and moves within
-    /// itself: at a point `c` of the surface, at [`Wall::velocity`] plus
-    /// `spin direction x (c - point)`. Zero by default.
+    /// The same wall turning at `spin` rad/s (a rate, the angular velocity being
+    /// `spin direction`) about its own axis, right-handed about [`Wall::direction`]: a cylinder
+    /// about its axis (a rotating drum), a plane about its normal through [`Wall::point`] (a
+    /// turntable). Its surface stays where it is and moves within itself: at a point `c` of the
+    /// surface, at [`Wall::velocity`] plus `spin direction x (c - point)`. Zero by default.
     ///
     /// # Errors
     /// [`ParameterError::NonFinite`] for a non-finite spin.
@@ -150,9 +152,28 @@ impl<F: Float> Wall<F> {
         self.velocity
     }
 
-    /// The wall's spin about its axis (rad/s).
+    /// The wall's turning rate about its axis (rad/s).
     pub fn spin(&self) -> F {
         self.spin
+    }
+
+    /// The wall's angular velocity, `spin direction` (rad/s; exactly zero for a wall that does
+    /// not turn).
+    #[inline(always)]
+    pub fn angular_velocity(&self) -> Vec3<F> {
+        if self.spin == F::ZERO {
+            Vec3::ZERO
+        } else {
+            self.direction * self.spin
+        }
+    }
+
+    /// The velocity of the wall's surface at the point nearest `position` (m/s): what a sphere
+    /// centred there meets, and what the wall's drive moves a contact's force along. For a
+    /// centre on a cylinder's axis, where no point is nearest, the wall's velocity.
+    pub fn surface_velocity(&self, position: Vec3<F>) -> Vec3<F> {
+        self.surface_at(position)
+            .map_or(self.velocity, |(_, _, velocity)| velocity)
     }
 
     /// A point on the plane; a point on the cylinder's axis.
@@ -160,7 +181,7 @@ impl<F: Float> Wall<F> {
         self.point
     }
 
-    /// The plane's unit outward normal; the cylinder's unit axis.
+    /// The plane's unit normal towards the spheres; the cylinder's unit axis.
     pub fn direction(&self) -> Vec3<F> {
         self.direction
     }
@@ -189,7 +210,7 @@ impl<F: Float> Wall<F> {
         offset - self.direction * offset.dot(self.direction)
     }
 
-    /// The surface nearest `position`: its unit outward normal there (towards the spheres), the
+    /// The surface nearest `position`: its unit normal there towards the spheres, the
     /// signed distance to it ([`Wall::distance_to`]) and the surface's velocity there. `None`
     /// for a centre on a cylinder's axis (closer than the smallest normal float), where the
     /// normal is undefined.
@@ -214,7 +235,7 @@ impl<F: Float> Wall<F> {
             return Some((normal, distance, self.velocity));
         }
         let contact = position - normal * distance;
-        let turning = self.direction.cross(contact - self.point) * self.spin;
+        let turning = self.angular_velocity().cross(contact - self.point);
         Some((normal, distance, self.velocity + turning))
     }
 }

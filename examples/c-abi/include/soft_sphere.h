@@ -567,9 +567,9 @@ typedef struct {
 } ss_forces_f64;
 
 /**
- * A wall: a plane through `point` whose outward normal is `direction` (any length), or, when
- * `radius` is positive, the inside of a cylinder of that radius about the axis through `point`
- * along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
+ * A wall: a plane through `point` whose normal towards the spheres is `direction` (any length),
+ * or, when `radius` is positive, the inside of a cylinder of that radius about the axis through
+ * `point` along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
  * normal through `point`), its surface staying in place. A zeroed struct's fields after
  * `direction` make a still plane.
  */
@@ -579,7 +579,7 @@ typedef struct {
    */
   ss_vec3_f64 point;
   /**
-   * The plane's outward normal (the side the spheres are on); the cylinder's axis.
+   * The plane's normal towards the spheres; the cylinder's axis.
    */
   ss_vec3_f64 direction;
   /**
@@ -591,7 +591,8 @@ typedef struct {
    */
   double radius;
   /**
-   * Turning rate about the axis, right-handed about `direction` (rad/s).
+   * Turning rate about the axis, right-handed about `direction` (rad/s; a rate, the angular
+   * velocity being `spin` times the unit `direction`).
    */
   double spin;
 } ss_wall_f64;
@@ -1137,9 +1138,9 @@ typedef struct {
 } ss_forces_f32;
 
 /**
- * A wall: a plane through `point` whose outward normal is `direction` (any length), or, when
- * `radius` is positive, the inside of a cylinder of that radius about the axis through `point`
- * along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
+ * A wall: a plane through `point` whose normal towards the spheres is `direction` (any length),
+ * or, when `radius` is positive, the inside of a cylinder of that radius about the axis through
+ * `point` along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
  * normal through `point`), its surface staying in place. A zeroed struct's fields after
  * `direction` make a still plane.
  */
@@ -1149,7 +1150,7 @@ typedef struct {
    */
   ss_vec3_f32 point;
   /**
-   * The plane's outward normal (the side the spheres are on); the cylinder's axis.
+   * The plane's normal towards the spheres; the cylinder's axis.
    */
   ss_vec3_f32 direction;
   /**
@@ -1161,7 +1162,8 @@ typedef struct {
    */
   float radius;
   /**
-   * Turning rate about the axis, right-handed about `direction` (rad/s).
+   * Turning rate about the axis, right-handed about `direction` (rad/s; a rate, the angular
+   * velocity being `spin` times the unit `direction`).
    */
   float spin;
 } ss_wall_f32;

@@ -252,14 +252,14 @@ unsafe fn on_wall<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    let plane = match wall_of(wall) {
-        Ok(plane) => plane,
+    let checked = match wall_of(wall) {
+        Ok(checked) => checked,
         Err(code) => return code,
     };
     let sphere: Sphere<F> = (*sphere).into();
     let dt = law.time_step;
     each_law!(&law.law, AnyLaw, l => evaluated!(state, out, s => {
-        l.sphere_wall(&sphere, &plane, &mut s, dt).map(sphere_as_j)
+        l.sphere_wall(&sphere, &checked, &mut s, dt).map(sphere_as_j)
     }))
 }
 
@@ -364,12 +364,12 @@ unsafe fn bound_wall<F: Float>(
     }) else {
         return SS_ERR_NULL;
     };
-    let plane = match bound.wall {
-        Some((given, plane)) if same_wall(&given, wall) => plane,
+    let checked = match bound.wall {
+        Some((given, checked)) if same_wall(&given, wall) => checked,
         _ => match wall_of(wall) {
-            Ok(plane) => {
-                bound.wall = Some((*wall, plane));
-                plane
+            Ok(checked) => {
+                bound.wall = Some((*wall, checked));
+                checked
             }
             Err(code) => return code,
         },
@@ -379,7 +379,7 @@ unsafe fn bound_wall<F: Float>(
         Err(e) => return contact_code(e),
     };
     each_law!(&mut bound.bound, AnyBound, b => evaluated!(state, out, s => {
-        b.sphere_wall(&sphere, &plane, &mut s).map(sphere_as_j)
+        b.sphere_wall(&sphere, &checked, &mut s).map(sphere_as_j)
     }))
 }
 

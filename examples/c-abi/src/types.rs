@@ -59,9 +59,9 @@ impl<F: Float> From<ss_sphere<F>> for Sphere<F> {
     }
 }
 
-/// A wall: a plane through `point` whose outward normal is `direction` (any length), or, when
-/// `radius` is positive, the inside of a cylinder of that radius about the axis through `point`
-/// along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
+/// A wall: a plane through `point` whose normal towards the spheres is `direction` (any length),
+/// or, when `radius` is positive, the inside of a cylinder of that radius about the axis through
+/// `point` along `direction`. It moves at `velocity` and turns at `spin` about its axis (a plane's: its
 /// normal through `point`), its surface staying in place. A zeroed struct's fields after
 /// `direction` make a still plane.
 #[repr(C)]
@@ -69,13 +69,14 @@ impl<F: Float> From<ss_sphere<F>> for Sphere<F> {
 pub struct ss_wall<F> {
     /// A point on the plane; a point on the cylinder's axis (m).
     pub point: ss_vec3<F>,
-    /// The plane's outward normal (the side the spheres are on); the cylinder's axis.
+    /// The plane's normal towards the spheres; the cylinder's axis.
     pub direction: ss_vec3<F>,
     /// Wall velocity (m/s).
     pub velocity: ss_vec3<F>,
     /// Zero for a plane; a cylinder's radius (m), the spheres inside.
     pub radius: F,
-    /// Turning rate about the axis, right-handed about `direction` (rad/s).
+    /// Turning rate about the axis, right-handed about `direction` (rad/s; a rate, the angular
+    /// velocity being `spin` times the unit `direction`).
     pub spin: F,
 }
 

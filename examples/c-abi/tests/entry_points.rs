@@ -506,7 +506,12 @@ fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
         soft_sphere::Wall::cylinder(Vec3::new(0.0, 0.0, 0.5), Vec3::new(2.0, 0.0, 0.0), 0.5)
             .and_then(|w| w.with_spin(3.0))
             .unwrap();
-    for (floor, wall) in [(floor, plane), (drum, turning)] {
+    // A radius of -0.0 is a plane, as 0.0 is.
+    let signed = ss_wall {
+        radius: -0.0,
+        ..floor
+    };
+    for (floor, wall) in [(floor, plane), (signed, plane), (drum, turning)] {
         let mut ours = MindlinSpring::default();
         let mut theirs = ss_state::default();
         for _ in 0..3 {

@@ -43,11 +43,13 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
   };
   int plane_at = 9;
   while (plane_at < narg && !is_wall(arg[plane_at])) plane_at++;
-  if (narg < 11) error->all(FLERR, usage);
+  if (narg < 10) error->all(FLERR, usage);
   cylinder = plane_at < narg && std::strcmp(arg[plane_at], "zcylinder") == 0;
   const int wall_words = cylinder ? 2 : 3;
-  if (plane_at + wall_words > narg)
+  if (plane_at >= narg)
     error->all(FLERR, "{}: no wall given (xplane, yplane or zplane LO HI, or zcylinder R)", style);
+  if (plane_at + wall_words > narg)
+    error->all(FLERR, "{}: {} needs {}", style, arg[plane_at], cylinder ? "R" : "LO and HI");
   SoftSphere::require_spheres(lmp, style);
   model = SoftSphere::model(lmp, style, arg[3]);
   coefficients = SoftSphere::coefficients(lmp, model, &arg[4]);
@@ -79,8 +81,6 @@ FixWallSoftSphere::FixWallSoftSphere(LAMMPS *lmp, int narg, char **arg) :
     cylinder_radius = utils::numeric(FLERR, arg[plane_at + 1], false, lmp);
     if (!(cylinder_radius > 0.0) || !std::isfinite(cylinder_radius))
       error->all(FLERR, "{}: zcylinder R: the radius must be a positive number", style);
-    if (domain->xperiodic || domain->yperiodic)
-      error->all(FLERR, "{}: zcylinder needs x and y not periodic", style);
     present[0] = 1;
     present[1] = 0;
     position[0] = position[1] = 0.0;
@@ -245,6 +245,9 @@ void FixWallSoftSphere::init()
                            "soft/sphere of the same law to mix with)\n",
                    style);
   types = mixed ? atom->ntypes : 1;
+  // Checked at each run's start: a change_box may have made x or y periodic since.
+  if (cylinder && (domain->xperiodic || domain->yperiodic))
+    error->all(FLERR, "{}: zcylinder needs x and y not periodic", style);
   refresh(true);
 }
 
@@ -327,6 +330,21 @@ void FixWallSoftSphere::forces()
     speed = amplitude * omega * std::sin(phase);
   } else if (motion == SHEAR)
     speed = shear_speed;
+  // The kernel's cylinder has one side: an atom whose centre is past it is inside the wall and
+  // would be pushed in by its whole depth (fix wall/gran's thin shell would push it out).
+  if (cylinder) {
+    const double r2 = cylinder_radius * cylinder_radius;
+    for (int i = 0; i < nlocal; i++) {
+      if (!(atom->mask[i] & groupbit)) continue;
+      const double *x = atom->x[i];
+      const double rho2 = x[0] * x[0] + x[1] * x[1];
+      if (rho2 > r2)
+        error->one(FLERR,
+                   "fix wall/soft/sphere: atom {} is outside the zcylinder (its centre {} from "
+                   "the axis, the radius {}): the wall holds atoms inside it",
+                   atom->tag[i], std::sqrt(rho2), cylinder_radius);
+    }
+  }
   ss_wall_f64 walls[WALLS];
   int count = 0, first = -1;
   for (int w = 0; w < WALLS; w++) {

@@ -129,10 +129,12 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                 else {
                     continue;
                 };
-                let velocity = wall.wall.velocity();
+                // The wall's surface where the sphere meets it (a turning wall's moves with its
+                // turn); the wall's torque is zero, so its spin adds no power.
+                let velocity = wall.wall.surface_velocity(sphere.position);
                 let motion = [
                     (sphere.velocity, sphere.angular_velocity),
-                    (velocity, Vec3::ZERO),
+                    (velocity, wall.wall.angular_velocity()),
                 ];
                 // The wall states follow the pairs' in the records and the seam's copy.
                 let states = (&self.saved_states[k], &self.wall_states[k - count]);
