@@ -11,10 +11,11 @@ use soft_sphere::{
 };
 
 /// `k_n` 1e4 N/m, `e` 0.8, `k_t` 3e3 N/m, tangential dashpot ratio 0.5, `mu` 0.4.
-fn law() -> LinearAA<f64> {
+fn law<F: Float>() -> LinearAA<F> {
+    let f = F::from_f64;
     ContactLaw::new(
-        LinearSpringDashpot::new(1.0e4, 0.8).unwrap(),
-        ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
+        LinearSpringDashpot::new(f(1.0e4), f(0.8)).unwrap(),
+        ModelAA(TangentialParameters::new(f(3.0e3), f(0.5), f(MU)).unwrap()),
     )
 }
 
@@ -60,7 +61,7 @@ fn a_cylinder_pushes_a_pressed_sphere_towards_its_axis_by_k_delta() {
             radius: DRUM_RADIUS
         }
     );
-    let law = law();
+    let law = law::<f64>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     for depth in [1.0e-7, 1.0e-6, 1.0e-5] {
         let sphere = pressed(&wall, across, depth, 0.7);
@@ -85,7 +86,7 @@ fn a_cylinder_pushes_a_pressed_sphere_towards_its_axis_by_k_delta() {
 #[test]
 fn a_radial_impact_on_a_drum_rebounds_at_the_restitution() {
     let (wall, across, around) = drum();
-    let law = law();
+    let law = law::<f64>();
     let mut sphere = pressed(&wall, across, -1.0e-4, -3.0);
     let speed = 0.5;
     sphere.velocity = across * speed;
@@ -118,7 +119,7 @@ fn a_turning_drum_drags_a_held_sphere_at_the_coulomb_limit_along_its_surface() {
     // 20 rad/s: the surface passes the sphere at 1 m/s.
     let turning = wall.with_spin(20.0).unwrap();
     assert_eq!((wall.spin(), turning.spin()), (0.0, 20.0));
-    let law = law();
+    let law = law::<f64>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     let sphere = pressed(&turning, across, 1.0e-5, 0.0);
     let mut state = SpringDisplacement::default();
@@ -147,7 +148,7 @@ fn a_turning_drum_drags_a_held_sphere_at_the_coulomb_limit_along_its_surface() {
 #[test]
 fn a_sphere_moving_with_a_turning_surface_feels_no_tangential_force() {
     let (wall, across, around) = drum();
-    let law = law();
+    let law = law::<f64>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     // A drum and a turntable (a floor turning about its normal through the origin).
     let floor = Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
@@ -191,7 +192,7 @@ fn a_sphere_carried_round_by_a_turning_drum_does_not_roll() {
     let (wall, across, _) = drum();
     let spin = 20.0;
     let turning = wall.with_spin(spin).unwrap();
-    let law = law().with_lever_arm(LeverArm::ContactPlane);
+    let law = law::<f64>().with_lever_arm(LeverArm::ContactPlane);
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     let mut sphere = pressed(&turning, across, 1.0e-5, 0.3);
     let omega = turning.direction() * spin;
@@ -219,7 +220,7 @@ fn a_sphere_carried_round_by_a_turning_drum_does_not_roll() {
 #[test]
 fn a_cylinder_contact_is_the_contact_against_its_tangent_plane() {
     let (wall, across, around) = drum();
-    let law = law();
+    let law = law::<f64>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     let spin = -7.0;
     let turning = wall
@@ -298,7 +299,7 @@ fn bad_cylinders_and_spins_are_refused() {
 fn a_sphere_centred_on_the_axis_is_refused_only_when_it_reaches_the_wall() {
     let z = Vec3::new(0.0, 0.0, 1.0);
     let drum = Wall::cylinder(Vec3::new(0.5, 0.5, 0.0), z, 0.1).unwrap();
-    let law = law();
+    let law = law::<f64>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     let before = SpringDisplacement {
         displacement: Vec3::new(1.0e-7, -2.0e-7, 3.0e-8),
@@ -341,10 +342,7 @@ fn a_sphere_centred_on_the_axis_is_refused_only_when_it_reaches_the_wall() {
 
 #[test]
 fn a_cylinder_in_f32_pushes_a_pressed_sphere_towards_its_axis_by_k_delta() {
-    let law: LinearAA<f32> = ContactLaw::new(
-        LinearSpringDashpot::new(1.0e4, 0.8).unwrap(),
-        ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),
-    );
+    let law = law::<f32>();
     let dt = law.time_step(1.0e-6, 1.0e-5).unwrap();
     let drum = Wall::cylinder(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0), 0.05_f32).unwrap();
     let depth = 1.0e-5_f32;
