@@ -130,20 +130,17 @@ fn laws(c: &mut Criterion) {
     every_law!(c, f32, Micromath, "f32_micromath");
 }
 
-/// Micro-slip at 4 to 32 springs beside Hertz-Mindlin's single spring and the linear Model AA,
+/// Micro-slip at 4 to 32 breakpoints beside Hertz-Mindlin's single spring and the linear Model AA,
 /// in f64 and f32: the cost side of the spring count (the error side is the validation run's
-/// `chung_ooi_test5_micro_slip_springs` table).
+/// `microslip_loops.csv` and `chung_ooi_test5_micro_slip_springs` tables).
 macro_rules! micro_slip_laws {
     ($c:expr, $F:ty, $label:expr) => {{
-        let pairs = pairs::<$F>();
-        let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
         let largest = HertzImpact {
             speed: 1.0 as $F,
             effective_radius: 1.0e-3 as $F,
         };
         let hertz = Hertz::new(5.0e5 as $F, 0.9 as $F, largest).unwrap();
         let mindlin = MindlinParameters::new(2.0e5 as $F, 0.5 as $F, 0.5 as $F).unwrap();
-        let span = hertz.largest_contact_radius(m);
         let with = |name: &str| format!("micro_slip/{name}/{}", $label);
         bench_law(
             $c,
@@ -161,22 +158,22 @@ macro_rules! micro_slip_laws {
         bench_law(
             $c,
             &with("springs_04"),
-            ContactLaw::new(hertz, MicroSlip::<$F, 4>::new(mindlin, span).unwrap()),
+            ContactLaw::new(hertz, MicroSlip::<$F, 4>::new(mindlin)),
         );
         bench_law(
             $c,
             &with("springs_08"),
-            ContactLaw::new(hertz, MicroSlip::<$F, 8>::new(mindlin, span).unwrap()),
+            ContactLaw::new(hertz, MicroSlip::<$F, 8>::new(mindlin)),
         );
         bench_law(
             $c,
             &with("springs_16"),
-            ContactLaw::new(hertz, MicroSlip::<$F, 16>::new(mindlin, span).unwrap()),
+            ContactLaw::new(hertz, MicroSlip::<$F, 16>::new(mindlin)),
         );
         bench_law(
             $c,
             &with("springs_32"),
-            ContactLaw::new(hertz, MicroSlip::<$F, 32>::new(mindlin, span).unwrap()),
+            ContactLaw::new(hertz, MicroSlip::<$F, 32>::new(mindlin)),
         );
     }};
 }

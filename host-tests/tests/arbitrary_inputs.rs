@@ -95,7 +95,7 @@ fn arbitrary_spheres_and_states_give_a_contact_or_an_error() {
     let hertz = Hertz::new(1e8, 0.7, largest).unwrap();
     let micro = ContactLaw::new(
         hertz,
-        MicroSlip::<f64, 4>::new(MindlinParameters::new(4e7, 0.5, 0.3).unwrap(), 1e-4).unwrap(),
+        MicroSlip::<f64, 4>::new(MindlinParameters::new(4e7, 0.5, 0.3).unwrap()),
     );
     let dt_linear = linear
         .coarse_time_step(1e-6, 1e-9)
@@ -176,7 +176,8 @@ fn states_are_read_field_by_field() {
         (springs.normal, springs.contact_radius),
         (read(0), values[3])
     );
-    assert_eq!(springs.displacements, [read(4), read(7)]);
+    assert_eq!(springs.positions, [values[4], values[5]]);
+    assert_eq!(springs.displacements, [read(6), read(9)]);
     let mut u = Unstructured::new(&bytes);
     let rolled = RollingSpring::<SpringDisplacement<f64>, f64>::arbitrary(&mut u).unwrap();
     assert_eq!(

@@ -149,6 +149,7 @@ fn a_state_is_unchanged_only_to_the_bit() {
     let springs = MicroSlipSprings::<f64, 2> {
         normal: Vec3::new(0.0, 0.0, 1.0),
         contact_radius: 1e-4,
+        positions: [0.0, 0.5],
         displacements: [Vec3::new(f64::NAN, 1e-6, 0.0), Vec3::new(2e-6, 0.0, 0.0)],
     };
     assert_eq!(checks::state_unchanged(&springs, &springs), Ok(()));
@@ -160,6 +161,12 @@ fn a_state_is_unchanged_only_to_the_bit() {
     );
     let mut moved = springs;
     moved.contact_radius = 2e-4;
+    assert_eq!(
+        checks::state_unchanged(&springs, &moved),
+        Err(Violation::StateChanged)
+    );
+    let mut moved = springs;
+    moved.positions[1] = 0.6;
     assert_eq!(
         checks::state_unchanged(&springs, &moved),
         Err(Violation::StateChanged)

@@ -2,7 +2,7 @@
 //! enforces: this test fails exactly when `cargo run -p host-tests --bin validate` would exit
 //! non-zero.
 
-use host_tests::validation::{CaseOutput, chung_ooi, kharaz, normal, plate};
+use host_tests::validation::{CaseOutput, chung_ooi, kharaz, micro_slip, normal, plate};
 
 fn assert_all_pass(case: &CaseOutput) {
     assert!(!case.checks.is_empty(), "the case made no checks");
@@ -131,6 +131,24 @@ fn chung_ooi_tests_4_to_8_meet_rigid_body_theory_in_gross_sliding() {
         );
     }
     assert_eq!(case.table("chung_ooi_test5").column("hertz_aa").len(), 48);
+}
+
+#[test]
+fn micro_slip_cycles_dissipate_mindlin_and_deresiewiczs_energy_at_every_contact_size() {
+    let case = micro_slip::case(|_| {});
+    assert_all_pass(&case);
+    // 4 breakpoint counts, 4 contact radii, 5 amplitudes.
+    assert_eq!(case.checks.len(), 80);
+    let table = case.table("microslip_loops");
+    assert_eq!(table.rows.len(), 80);
+    assert_eq!(
+        table
+            .column("springs")
+            .iter()
+            .filter(|&&s| s == 16.0)
+            .count(),
+        20
+    );
 }
 
 #[test]

@@ -90,6 +90,9 @@ impl<'a, F: Float + Arbitrary<'a>, const SPRINGS: usize> Arbitrary<'a>
             contact_radius: u.arbitrary()?,
             ..Default::default()
         };
+        for position in &mut springs.positions {
+            *position = u.arbitrary()?;
+        }
         for displacement in &mut springs.displacements {
             *displacement = u.arbitrary()?;
         }

@@ -145,14 +145,15 @@
 #define SS_MODEL_HERTZ_AA_LUDING 7
 
 /**
- * Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
- * tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
+ * Hertz with Mindlin & Deresiewicz's micro-slip, its profile in up to `SS_MICROSLIP_SPRINGS`
+ * breakpoints: material tables only (`ss_table_*`; its state, `4 SS_MICROSLIP_SPRINGS + 4`
+ * numbers per contact, does
  * not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).
  */
 #define SS_MODEL_HERTZ_MICROSLIP 8
 
 /**
- * Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.
+ * Breakpoints of `SS_MODEL_HERTZ_MICROSLIP`'s displacement profile.
  */
 #define SS_MICROSLIP_SPRINGS 16
 
@@ -777,12 +778,6 @@ typedef struct {
    * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
    */
   double largest_effective_radius;
-  /**
-   * `SS_MODEL_HERTZ_MICROSLIP`: the contact radius its springs span (m), the declared
-   * impact's for the heaviest pair, `sqrt(R* delta)` at the peak overlap
-   * `delta = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`; past it the outermost spring widens.
-   */
-  double largest_contact_radius;
 } ss_table_config_f64;
 
 /**
@@ -1348,12 +1343,6 @@ typedef struct {
    * `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
    */
   float largest_effective_radius;
-  /**
-   * `SS_MODEL_HERTZ_MICROSLIP`: the contact radius its springs span (m), the declared
-   * impact's for the heaviest pair, `sqrt(R* delta)` at the peak overlap
-   * `delta = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`; past it the outermost spring widens.
-   */
-  float largest_contact_radius;
 } ss_table_config_f32;
 
 /**

@@ -42,7 +42,7 @@ pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 pub const SS_ERR_INACCURATE_TIME_STEP: i32 = 20;
 
 // The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_MICROSLIP: registry.rs's list.
-/// Springs across the contact radius of `SS_MODEL_HERTZ_MICROSLIP`.
+/// Breakpoints of `SS_MODEL_HERTZ_MICROSLIP`'s displacement profile.
 pub const SS_MICROSLIP_SPRINGS: usize = 16;
 
 /// No parameter was rejected.

@@ -50,8 +50,9 @@ macro_rules! with_laws {
                 HertzAALuding = SS_MODEL_HERTZ_AA_LUDING = 7, "hertz/aa/luding", hertz, MindlinAALuding<F>, MindlinAALuding;
             ]
             [
-                /// Hertz with Mindlin & Deresiewicz's micro-slip on `SS_MICROSLIP_SPRINGS` springs: material
-                /// tables only (`ss_table_*`; its state, `3 SS_MICROSLIP_SPRINGS + 4` numbers per contact, does
+                /// Hertz with Mindlin & Deresiewicz's micro-slip, its profile in up to `SS_MICROSLIP_SPRINGS`
+                /// breakpoints: material tables only (`ss_table_*`; its state, `4 SS_MICROSLIP_SPRINGS + 4`
+                /// numbers per contact, does
                 /// not fit `ss_state`, so `ss_law_new_*` answers `SS_ERR_UNKNOWN_MODEL`).
                 HertzMicroSlip = SS_MODEL_HERTZ_MICROSLIP = 8, hertz, MicroSlipMixing<F>, micro_slip;
             ]
@@ -95,24 +96,21 @@ macro_rules! law_of {
     };
 }
 
-/// The mixing rule of a family and tangential constructor (`$span`: micro-slip's contact radius).
+/// The mixing rule of a family and tangential constructor.
 macro_rules! mixing_of {
-    ($impact:expr, $span:expr, hertz, micro_slip) => {
-        MicroSlipMixing {
-            largest: $impact,
-            span: $span,
-        }
+    ($impact:expr, hertz, micro_slip) => {
+        MicroSlipMixing { largest: $impact }
     };
-    ($impact:expr, $span:expr, linear, frictionless) => {
+    ($impact:expr, linear, frictionless) => {
         LinearMixing::new(|_| Frictionless)
     };
-    ($impact:expr, $span:expr, linear, $make:ident) => {
+    ($impact:expr, linear, $make:ident) => {
         LinearMixing::new($make)
     };
-    ($impact:expr, $span:expr, hertz, frictionless) => {
+    ($impact:expr, hertz, frictionless) => {
         HertzMixing::new($impact, |_| Frictionless)
     };
-    ($impact:expr, $span:expr, hertz, $make:ident) => {
+    ($impact:expr, hertz, $make:ident) => {
         HertzMixing::new($impact, $make)
     };
 }
@@ -269,22 +267,17 @@ macro_rules! registry {
         }
 
         impl<F: Float> PlainTable<F> {
-            /// A table of `materials` materials of the law `model` names (`span`: micro-slip's
-            /// contact radius); `None` for a code the list does not hold.
-            pub(crate) fn new(
-                model: i32,
-                impact: HertzImpact<F>,
-                span: F,
-                materials: usize,
-            ) -> Option<Self> {
+            /// A table of `materials` materials of the law `model` names; `None` for a code the
+            /// list does not hold.
+            pub(crate) fn new(model: i32, impact: HertzImpact<F>, materials: usize) -> Option<Self> {
                 Some(match model {
                     $( $code => Self::$variant(Tabled::new(
-                        mixing_of!(impact, span, $family, $make),
+                        mixing_of!(impact, $family, $make),
                         properties_of!($family, $make),
                         materials,
                     )), )*
                     $( $tcode => Self::$tvariant(Tabled::new(
-                        mixing_of!(impact, span, $tfamily, $tmake),
+                        mixing_of!(impact, $tfamily, $tmake),
                         properties_of!($tfamily, $tmake),
                         materials,
                     )), )*
@@ -299,18 +292,18 @@ macro_rules! registry {
             /// against).
             pub(crate) fn new(
                 model: i32,
-                (impact, span): (HertzImpact<F>, F),
+                impact: HertzImpact<F>,
                 materials: usize,
                 smallest_inertia: F,
             ) -> Option<Self> {
                 Some(match model {
                     $( $code if rolls!($make) => Self::$variant(Tabled::new(
-                        Rolled { mixing: mixing_of!(impact, span, $family, $make), smallest_inertia },
+                        Rolled { mixing: mixing_of!(impact, $family, $make), smallest_inertia },
                         rolled_properties_of!($family),
                         materials,
                     )), )*
                     $( $tcode if rolls!($tmake) => Self::$tvariant(Tabled::new(
-                        Rolled { mixing: mixing_of!(impact, span, $tfamily, $tmake), smallest_inertia },
+                        Rolled { mixing: mixing_of!(impact, $tfamily, $tmake), smallest_inertia },
                         rolled_properties_of!($tfamily),
                         materials,
                     )), )*

@@ -36,9 +36,9 @@ pub(crate) enum StateArrays {
     Mindlin,
 }
 
-/// The normal, the contact radius, then each spring's displacement.
+/// The normal, the contact radius, each breakpoint's position, then each one's displacement.
 impl<F: Float, const SPRINGS: usize> Flat<F> for MicroSlipSprings<F, SPRINGS> {
-    const VALUES: usize = 3 * SPRINGS + 4;
+    const VALUES: usize = 4 * SPRINGS + 4;
     fn read(values: &[F]) -> Self {
         let vector = |k: usize| Vec3::new(values[k], values[k + 1], values[k + 2]);
         let mut springs = MicroSlipSprings {
@@ -46,16 +46,19 @@ impl<F: Float, const SPRINGS: usize> Flat<F> for MicroSlipSprings<F, SPRINGS> {
             contact_radius: values[3],
             ..Default::default()
         };
+        springs.positions.copy_from_slice(&values[4..4 + SPRINGS]);
         for (k, u) in springs.displacements.iter_mut().enumerate() {
-            *u = vector(4 + 3 * k);
+            *u = vector(4 + SPRINGS + 3 * k);
         }
         springs
     }
     fn write(&self, values: &mut [F]) {
         let n = self.normal;
         values[..4].copy_from_slice(&[n.x, n.y, n.z, self.contact_radius]);
+        values[4..4 + SPRINGS].copy_from_slice(&self.positions);
         for (k, u) in self.displacements.iter().enumerate() {
-            values[4 + 3 * k..7 + 3 * k].copy_from_slice(&[u.x, u.y, u.z]);
+            let at = 4 + SPRINGS + 3 * k;
+            values[at..at + 3].copy_from_slice(&[u.x, u.y, u.z]);
         }
     }
     /// Seen from the other body the normal and every displacement are negated.

@@ -10,14 +10,14 @@
 use soft_sphere::{
     ContactLaw, ElasticMaterial, ElasticPlasticRolling, Float, HertzImpact, HertzMicroSlip,
     HertzMixing, Interaction, Law, LinearMaterial, ListError, Material, MaterialTable,
-    MaterialWall, MathBackend, MicroSlip, MindlinAA, MindlinParameters, Mixing, NormalModel,
-    ParameterError, Rotation, SphereArrays, TangentialModel, TimeStep, Vec3, Wall,
+    MaterialWall, MathBackend, MicroSlip, MindlinAA, Mixing, NormalModel, ParameterError, Rotation,
+    SphereArrays, TangentialModel, TimeStep, Vec3, Wall,
 };
 
 use crate::registry::{PlainTable, RolledTable, hertz_model};
 use crate::{
-    Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_MICROSLIP_SPRINGS, SS_MODEL_HERTZ_MICROSLIP, SS_OK,
-    SS_PARAMETER_NONE, parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
+    Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_MICROSLIP_SPRINGS, SS_OK, SS_PARAMETER_NONE,
+    parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
 };
 
 /// The most materials a table holds (LAMMPS atom types).
@@ -60,10 +60,6 @@ pub struct ss_table_config<F> {
     pub largest_impact_speed: F,
     /// `SS_MODEL_HERTZ_*`: the largest effective radius `R*` the time step is checked for (m).
     pub largest_effective_radius: F,
-    /// `SS_MODEL_HERTZ_MICROSLIP`: the contact radius its springs span (m), the declared
-    /// impact's for the heaviest pair, `sqrt(R* delta)` at the peak overlap
-    /// `delta = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`; past it the outermost spring widens.
-    pub largest_contact_radius: F,
 }
 
 /// The coefficients of a material, or of one pair of materials' contact. The linear laws read
@@ -378,13 +374,11 @@ pub(crate) fn rolled_elastic<F: Float>(
 }
 
 /// The Hertz-Mindlin mixing rule with micro-slip: [`HertzMixing`]'s Hertz law and Mindlin
-/// parameters, the springs spanning one contact radius for every pair.
+/// parameters, the profile in `SS_MICROSLIP_SPRINGS` breakpoints.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct MicroSlipMixing<F: Float> {
     /// The declared impact of the Hertz law.
     pub(crate) largest: HertzImpact<F>,
-    /// The contact radius the springs span (m).
-    pub(crate) span: F,
 }
 
 impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
@@ -393,7 +387,7 @@ impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
 
     fn law(&self, i: &Self::Properties, j: &Self::Properties) -> Result<Self::Law, ParameterError> {
         let mindlin = HertzMixing::new(self.largest, MindlinAA).law(i, j)?;
-        let micro = MicroSlip::new(mindlin.tangential().0, self.span)?;
+        let micro = MicroSlip::new(mindlin.tangential().0);
         Ok(ContactLaw::new(*mindlin.normal(), micro))
     }
 }
@@ -675,17 +669,11 @@ pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTabl
             .law(&probe, &probe)
             .map_err(parameter_code)?;
     }
-    let span = config.largest_contact_radius;
-    if config.model == SS_MODEL_HERTZ_MICROSLIP {
-        // Micro-slip's springs span the declared contact radius: checked here, once.
-        let probe = MindlinParameters::new(F::ONE, F::ZERO, F::ZERO).map_err(parameter_code)?;
-        MicroSlip::<F, SS_MICROSLIP_SPRINGS>::new(probe, span).map_err(parameter_code)?;
-    }
     match config.rolling {
-        SS_ROLLING_NONE => PlainTable::new(config.model, impact, span, m)
+        SS_ROLLING_NONE => PlainTable::new(config.model, impact, m)
             .map(AnyTable::Plain)
             .ok_or(SS_ERR_UNKNOWN_MODEL),
-        SS_ROLLING_EPSD => rolled_table(config, (impact, span)),
+        SS_ROLLING_EPSD => rolled_table(config, impact),
         _ => Err(SS_ERR_UNKNOWN_MODEL),
     }
 }
@@ -694,12 +682,12 @@ pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTabl
 /// here).
 pub(crate) fn rolled_table<F: Float>(
     config: &ss_table_config<F>,
-    (impact, span): (HertzImpact<F>, F),
+    impact: HertzImpact<F>,
 ) -> Result<AnyTable<F>, i32> {
     let (m, smallest_inertia) = (config.materials, config.smallest_inertia);
     ElasticPlasticRolling::new(F::ZERO, F::ONE, F::ZERO, smallest_inertia)
         .map_err(parameter_code)?;
-    RolledTable::new(config.model, (impact, span), m, smallest_inertia)
+    RolledTable::new(config.model, impact, m, smallest_inertia)
         .map(AnyTable::Rolled)
         .ok_or(SS_ERR_UNKNOWN_MODEL)
 }

@@ -13,7 +13,9 @@ use host_tests::analytic::{rigid_body_oblique, rolling_onset};
 use host_tests::data;
 use host_tests::plot::{Axes, Mark, Series, chart};
 use host_tests::validation::kharaz::{self, Model, TALK};
-use host_tests::validation::{CaseOutput, Cell, Table, chung_ooi, normal, plate, rolling};
+use host_tests::validation::{
+    CaseOutput, Cell, Table, chung_ooi, micro_slip, normal, plate, rolling,
+};
 
 fn main() -> ExitCode {
     match run() {
@@ -85,6 +87,10 @@ fn run() -> Result<bool, Box<dyn Error>> {
             "Chung & Ooi Tests 5 to 8: oblique impacts (docs/physics.md, section 5.5)",
             chung_ooi::oblique(progress),
         ),
+        (
+            "Micro-slip load cycles (docs/physics.md, section 5.7)",
+            micro_slip::case(progress),
+        ),
     ];
     progress("writing results");
     for (title, case) in &cases {
@@ -93,7 +99,7 @@ fn run() -> Result<bool, Box<dyn Error>> {
             table.write_csv(&out_dir.join(format!("{name}.csv")))?;
         }
     }
-    let [_, (_, talk), (_, mfix), (_, plate), .., (_, oblique)] = &cases;
+    let [_, (_, talk), (_, mfix), (_, plate), .., (_, oblique), _] = &cases;
     plot_kharaz(&out_dir, talk)?;
     plot_mfix(&out_dir, mfix)?;
     plot_plate(&out_dir, plate)?;

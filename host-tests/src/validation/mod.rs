@@ -4,6 +4,7 @@
 
 pub mod chung_ooi;
 pub mod kharaz;
+pub mod micro_slip;
 pub mod normal;
 pub mod plate;
 pub mod precision;

@@ -197,8 +197,7 @@ impl<F: Float> Hertz<F> {
 
     /// The largest contact radius the declared impact reaches for effective mass `m*` (m):
     /// `sqrt(R* delta_max)` at the declared `R*` and the undamped impact's peak overlap
-    /// `delta_max = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`. What a [`MicroSlip`](crate::MicroSlip)
-    /// bed spans, given the scene's largest `m*`.
+    /// `delta_max = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5)`.
     pub fn largest_contact_radius(&self, effective_mass: F) -> F {
         let overlap = self.largest_overlap(effective_mass);
         F::from_f64(libm::sqrt(self.largest.effective_radius.to_f64() * overlap))
