@@ -132,6 +132,11 @@ impl<F: Float, const SPRINGS: usize> MicroSlip<F, SPRINGS> {
     }
 }
 
+/// The squared sine of the angle between two slipping breakpoints' trials past which the
+/// spring midway becomes a breakpoint too (an angle of 0.01: the line between them then strays
+/// from the limit by at most 1.3e-5 of it).
+const TURNED: f64 = 1e-4;
+
 /// One breakpoint of the profile being built: its position, displacement and limit, and
 /// whether it is at its limit (slipping).
 #[derive(Clone, Copy, Debug)]
@@ -211,6 +216,22 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
             self.keep_last(next.position, next.displacement);
         }
         self.last = next;
+    }
+
+    /// Between two slipping breakpoints the springs turn each by its own angle when the step
+    /// is not along them (the weaker, the more), away from the line between the two: where the
+    /// two trials' directions differ by more than [`TURNED`] (squared sine), the spring midway
+    /// in `1 - t^2` is kept too. Along one direction it never is.
+    #[inline(always)]
+    fn refine<M: MathBackend<F>>(&mut self, a: &Breakpoint<F>, b: &Breakpoint<F>, full_slip: F) {
+        let (u, v) = (a.displacement, b.displacement);
+        let sine_squared = u.cross(v).norm_squared();
+        let turned = sine_squared > F::from_f64(TURNED) * u.norm_squared() * v.norm_squared();
+        let squared = (a.position * a.position + b.position * b.position) * F::HALF;
+        let position = M::sqrt(squared);
+        if turned && position > a.position && position < b.position {
+            self.push(Breakpoint::trial(position, (u + v) * F::HALF, full_slip).clipped::<M>());
+        }
     }
 
     /// Ends the profile at the rim, where every spring is at its (zero) limit.
@@ -424,7 +445,11 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
                 let rim = previous.displacement + (next.displacement - previous.displacement) * w;
                 next = Breakpoint::trial(F::ONE, rim, full_slip);
             }
-            for w in crossings::<F, M>(&previous, &next).into_iter().flatten() {
+            let crossed = crossings::<F, M>(&previous, &next);
+            if crossed[0].is_none() && previous.at_limit && next.at_limit {
+                profile.refine::<M>(&previous, &next, full_slip);
+            }
+            for w in crossed.into_iter().flatten() {
                 let (a, b) = (previous.position, next.position);
                 let squared = a * a + w * (b - a) * (b + a);
                 let position = M::sqrt(squared);
