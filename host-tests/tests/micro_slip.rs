@@ -421,3 +421,46 @@ fn a_turning_path_stays_near_the_bed_it_stands_for() {
         assert!(d < bound, "{n} breakpoints: {d:e} of mu P, bound {bound:e}");
     }
 }
+
+/// A random walk of the contact (steps of up to a tenth of the full-slip displacement, any
+/// direction in the plane) under a load that breathes, on a bed of `N` breakpoints: the profile
+/// stays well formed (positions rising from the centre, then the rim's), the springs never hold
+/// more than the work put in.
+fn random_walk<const N: usize>(seed: u64) {
+    let mut bed = steel::<N>(1e-5);
+    let full = bed.full_slip();
+    let base = bed.overlap;
+    let mut state = seed;
+    let mut uniform = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for k in 0..5_000 {
+        bed.overlap = base * (1.0 + 0.3 * (0.01 * k as f64).sin());
+        let (length, angle) = (0.1 * full * uniform(), std::f64::consts::TAU * uniform());
+        bed.push(length * angle.cos(), length * angle.sin());
+        let p = bed.state.positions;
+        let used = 1 + p
+            .windows(2)
+            .take_while(|w| w[1] > w[0] && w[1] < 1.0)
+            .count();
+        assert_eq!(p[0], 0.0, "{N} breakpoints, step {k}: {p:?}");
+        assert!(
+            p[used..].iter().all(|&t| t == 1.0),
+            "{N} breakpoints, step {k}: {p:?}"
+        );
+        let held = bed.law.stored_energy(&bed.state);
+        assert!(held <= bed.work * (1.0 + 1e-9) + 1e-30, "{N}, step {k}");
+    }
+}
+
+#[test]
+fn a_random_walk_keeps_the_profile_well_formed() {
+    for seed in 1..4 {
+        random_walk::<3>(seed);
+        random_walk::<4>(seed);
+        random_walk::<8>(seed);
+    }
+}
