@@ -464,3 +464,68 @@ fn a_random_walk_keeps_the_profile_well_formed() {
         random_walk::<8>(seed);
     }
 }
+
+/// One step from a caller's profile along x (2 to 6 breakpoints, each within or past its limit,
+/// of either sign), against the springs it stands for: each spring takes the profile's value at
+/// its place (linear in `1 - t^2` between breakpoints, zero at the rim), moves and is held to
+/// its limit. Along one direction the law's step is theirs (with room for every crossing), to
+/// the springs' own discretisation (2.7e-7 of mu P measured).
+#[test]
+fn one_step_from_any_profile_along_x_is_the_springs_step() {
+    let bed = steel::<32>(1e-5);
+    let full = bed.full_slip();
+    let stiffness = 8.0 * SHEAR * bed.contact_radius();
+    let limit = |t: f64| full * (1.0 - t * t);
+    let mut seed = 7_u64;
+    let mut uniform = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut worst = 0.0_f64;
+    for _ in 0..300 {
+        let used = 2 + (uniform() * 5.0) as usize;
+        let mut positions = [1.0; 32];
+        positions[0] = 0.0;
+        let mut inner: Vec<f64> = (1..used).map(|_| 0.05 + 0.9 * uniform()).collect();
+        inner.sort_by(f64::total_cmp);
+        positions[1..used].copy_from_slice(&inner);
+        let mut values = [0.0; 32];
+        for k in 0..used {
+            values[k] = (2.0 * uniform() - 1.0) * 1.5 * limit(positions[k]);
+        }
+        let step = (2.0 * uniform() - 1.0) * 0.3 * full;
+        let state = MicroSlipSprings {
+            normal: Vec3::new(0.0, 0.0, 1.0),
+            contact_radius: bed.contact_radius(),
+            positions,
+            displacements: values.map(|x| Vec3::new(x, 0.0, 0.0)),
+        };
+        let input = bed.input(Vec3::new(0.0, 0.0, 1.0), Vec3::new(step, 0.0, 0.0));
+        let law = bed.law.force::<Libm>(&state, &input).force.x;
+        // The springs, at the midpoints of 20,000 equal cells.
+        let count = 20_000;
+        let mut sum = 0.0;
+        let mut k = 0;
+        for i in 0..count {
+            let t = (i as f64 + 0.5) / count as f64;
+            while k + 1 < used && positions[k + 1] <= t {
+                k += 1;
+            }
+            let (a, u) = (positions[k], values[k]);
+            let (b, v) = if k + 1 < used {
+                (positions[k + 1], values[k + 1])
+            } else {
+                (1.0, 0.0)
+            };
+            let w = (a * a - t * t) / (a * a - b * b);
+            let moved = u + w * (v - u) + step;
+            sum += moved.clamp(-limit(t), limit(t));
+        }
+        let springs = -stiffness * sum / count as f64;
+        let d = (law - springs).abs() / bed.limit();
+        worst = worst.max(d);
+    }
+    assert!(worst < 1e-6, "{worst:e} of mu P");
+}
