@@ -469,7 +469,8 @@ fn a_random_walk_keeps_the_profile_well_formed() {
 /// of either sign), against the springs it stands for: each spring takes the profile's value at
 /// its place (linear in `1 - t^2` between breakpoints, zero at the rim), moves and is held to
 /// its limit. Along one direction the law's step is theirs (with room for every crossing), to
-/// the springs' own discretisation (2.7e-7 of mu P measured).
+/// the springs' own discretisation (2.7e-7 of mu P measured); and so is the energy they hold
+/// (1.1e-7 of mu P delta_s).
 #[test]
 fn one_step_from_any_profile_along_x_is_the_springs_step() {
     let bed = steel::<32>(1e-5);
@@ -483,7 +484,7 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
             .wrapping_add(1442695040888963407);
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
-    let mut worst = 0.0_f64;
+    let (mut worst, mut worst_energy) = (0.0_f64, 0.0_f64);
     for _ in 0..300 {
         let used = 2 + (uniform() * 5.0) as usize;
         let mut positions = [1.0; 32];
@@ -503,10 +504,11 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
             displacements: values.map(|x| Vec3::new(x, 0.0, 0.0)),
         };
         let input = bed.input(Vec3::new(0.0, 0.0, 1.0), Vec3::new(step, 0.0, 0.0));
-        let law = bed.law.force::<Libm>(&state, &input).force.x;
+        let out = bed.law.force::<Libm>(&state, &input);
+        let law = out.force.x;
         // The springs, at the midpoints of 20,000 equal cells.
         let count = 20_000;
-        let mut sum = 0.0;
+        let (mut sum, mut squares) = (0.0, 0.0);
         let mut k = 0;
         for i in 0..count {
             let t = (i as f64 + 0.5) / count as f64;
@@ -521,11 +523,18 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
             };
             let w = (a * a - t * t) / (a * a - b * b);
             let moved = u + w * (v - u) + step;
-            sum += moved.clamp(-limit(t), limit(t));
+            let held = moved.clamp(-limit(t), limit(t));
+            sum += held;
+            squares += held * held;
         }
         let springs = -stiffness * sum / count as f64;
+        // What they hold, `8 G* a / 2` times the mean of `u^2`, against the law's account.
+        let energy = 0.5 * stiffness * squares / count as f64;
+        let held = bed.law.stored_energy(&out.state);
+        worst_energy = worst_energy.max((held - energy).abs() / (bed.limit() * full));
         let d = (law - springs).abs() / bed.limit();
         worst = worst.max(d);
     }
     assert!(worst < 1e-6, "{worst:e} of mu P");
+    assert!(worst_energy < 1e-6, "{worst_energy:e} of mu P delta_s");
 }
