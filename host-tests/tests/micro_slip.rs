@@ -466,9 +466,9 @@ fn a_random_walk_keeps_the_profile_well_formed() {
 }
 
 /// One step from a caller's profile along x (2 to 6 breakpoints, each within or past its limit,
-/// of either sign), against the springs it stands for: each spring takes the profile's value at
-/// its place (linear in `1 - t^2` between breakpoints, zero at the rim), moves and is held to
-/// its limit. Along one direction the law's step is theirs (with room for every crossing), to
+/// of either sign, on a contact 0.7 to 1.4 times as wide as now), against the springs it stands
+/// for: each spring takes the profile's value where it was (linear in `1 - t^2` between
+/// breakpoints, zero at and past the old rim), moves and is held to its limit. Along one direction the law's step is theirs (with room for every crossing), to
 /// the springs' own discretisation (2.7e-7 of mu P measured); and so is the energy they hold
 /// (1.1e-7 of mu P delta_s).
 #[test]
@@ -489,17 +489,22 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
         let used = 2 + (uniform() * 5.0) as usize;
         let mut positions = [1.0; 32];
         positions[0] = 0.0;
-        let mut inner: Vec<f64> = (1..used).map(|_| 0.05 + 0.9 * uniform()).collect();
-        inner.sort_by(f64::total_cmp);
-        positions[1..used].copy_from_slice(&inner);
+        // Rising, a breakpoint to each of `used - 1` equal bands (the springs below resolve
+        // every segment).
+        let bands = (used - 1) as f64;
+        for k in 1..used {
+            positions[k] = 0.05 + 0.9 * ((k - 1) as f64 + 0.1 + 0.8 * uniform()) / bands;
+        }
         let mut values = [0.0; 32];
         for k in 0..used {
             values[k] = (2.0 * uniform() - 1.0) * 1.5 * limit(positions[k]);
         }
         let step = (2.0 * uniform() - 1.0) * 0.3 * full;
+        // The contact was this much wider (a shrinking contact) or narrower (a growing one).
+        let ratio = 0.7 + 0.7 * uniform();
         let state = MicroSlipSprings {
             normal: Vec3::new(0.0, 0.0, 1.0),
-            contact_radius: bed.contact_radius(),
+            contact_radius: bed.contact_radius() * ratio,
             positions,
             displacements: values.map(|x| Vec3::new(x, 0.0, 0.0)),
         };
@@ -512,7 +517,9 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
         let mut k = 0;
         for i in 0..count {
             let t = (i as f64 + 0.5) / count as f64;
-            while k + 1 < used && positions[k + 1] <= t {
+            // Where the spring was on the old contact: past its rim, new area free of shear.
+            let was = t / ratio;
+            while k + 1 < used && positions[k + 1] <= was {
                 k += 1;
             }
             let (a, u) = (positions[k], values[k]);
@@ -521,8 +528,9 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
             } else {
                 (1.0, 0.0)
             };
-            let w = (a * a - t * t) / (a * a - b * b);
-            let moved = u + w * (v - u) + step;
+            let w = (a * a - was * was) / (a * a - b * b);
+            let old = if was < 1.0 { u + w * (v - u) } else { 0.0 };
+            let moved = old + step;
             let held = moved.clamp(-limit(t), limit(t));
             sum += held;
             squares += held * held;
@@ -537,4 +545,24 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
     }
     assert!(worst < 1e-6, "{worst:e} of mu P");
     assert!(worst_energy < 1e-6, "{worst_energy:e} of mu P delta_s");
+}
+
+#[test]
+fn the_stable_step_is_mindlins() {
+    // The springs never exceed Mindlin's no-slip stiffness: the same tangential mode.
+    let hertz = soft_sphere::Hertz::new(
+        MODULUS,
+        0.9,
+        soft_sphere::HertzImpact {
+            speed: 5.0,
+            effective_radius: RADIUS,
+        },
+    )
+    .unwrap();
+    let p = MindlinParameters::new(SHEAR, 0.5, FRICTION).unwrap();
+    let design = soft_sphere::NormalModel::design_contact(&hertz, 0.03);
+    let micro = MicroSlip::<f64, 8>::new(p).critical_time_step(&design, 0.01);
+    let mindlin = soft_sphere::MindlinAA(p).critical_time_step(&design, 0.01);
+    assert!(micro > 0.0 && micro.is_finite());
+    assert_eq!(micro, mindlin);
 }
