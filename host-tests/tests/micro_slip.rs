@@ -492,8 +492,8 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
         // Rising, a breakpoint to each of `used - 1` equal bands (the springs below resolve
         // every segment).
         let bands = (used - 1) as f64;
-        for k in 1..used {
-            positions[k] = 0.05 + 0.9 * ((k - 1) as f64 + 0.1 + 0.8 * uniform()) / bands;
+        for (k, t) in positions[1..used].iter_mut().enumerate() {
+            *t = 0.05 + 0.9 * (k as f64 + 0.1 + 0.8 * uniform()) / bands;
         }
         let mut values = [0.0; 32];
         for k in 0..used {
