@@ -16,9 +16,10 @@
 //! `SPRINGS` breakpoints, which follow the fronts as they move and the contact as it grows and
 //! shrinks (a contact radius `a` to `a'` scales every position by `a / a'`, which keeps the
 //! profile linear in `lambda`): exact along one direction at a steady load while the turning
-//! points fit, whatever the contact's size. Where they do not (more remembered turning points
-//! than breakpoints, a tangential direction that keeps turning, a changing normal load), the
-//! breakpoint whose removal changes the profile least is dropped.
+//! points fit, whatever the contact's size. Where a step turns the springs of a slipping
+//! stretch apart, the spring midway becomes a breakpoint too; where the breakpoints do not
+//! suffice (more remembered turning points than room, a direction that keeps turning, a
+//! changing normal load), the one whose removal changes the profile least is dropped.
 
 use super::{
     ContactState, MindlinParameters, Slide, TangentialInput, TangentialModel, TangentialOutput,

@@ -20,7 +20,7 @@
 //! | [`MindlinStateless`] | `-k_t(a) v_t t_e` | along the trial force | none |
 //! | [`MindlinAA`] | stored force `F_s`, `+= -k_t(a) v_t dt`, times `a / a_prev` when unloading | along the trial force | limited to `mu |F_n|` |
 //! | [`MindlinAALuding`] | as [`MindlinAA`] | along the trial force | `F_t + eta_t v_t` |
-//! | [`MicroSlip`] | a bed of `SPRINGS` cells across the contact, each `8 G* dx` with its own share of `mu |F_n|` (Mindlin & Deresiewicz by Popov & Heß's MDR) | along the trial force | each cell's, limited to its share |
+//! | [`MicroSlip`] | a bed of springs across the contact, `8 G* dx` each, its profile kept in up to `SPRINGS` breakpoints that follow the slip fronts (Mindlin & Deresiewicz by Popov & Heß's MDR) | along the trial force | each spring's, limited to its share of `mu |F_n|` |
 //!
 //! Trial force `F* = -k_t xi - eta_t v_t` with `eta_t = r eta_n` (`r` the dashpot ratio); the contact sticks
 //! while `|F*| <= mu |F_n|`. Every slot keeps `|F_t| <= mu |F_n|` (to rounding with an exact
