@@ -1,5 +1,5 @@
-//! Per-contact cost: one contact evaluation (hot cache, a batch of 1024 independent touching
-//! pairs) for every tangential law x f32/f64 x math backend, and the slots a scene can switch
+//! Per-contact cost: one contact evaluation (hot cache, 1024 independent touching pairs
+//! per iteration) for every tangential law x f32/f64 x math backend, and the slots a scene can switch
 //! off (friction, rotation, damping), and what an engine's way of calling costs (the law, the
 //! bound law checking its spheres, the bound law on checked spheres). Also prints the per-contact
 //! state size.
@@ -9,14 +9,13 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use host_tests::pairs::{blocks, touching_pairs};
-use soft_sphere::batch::{ContactBlock, LANES};
+use host_tests::pairs::touching_pairs;
 use soft_sphere::{
     CheckedSphere, ConstantRolling, ContactLaw, ElasticPlasticRolling, Float, Frictionless, Hertz,
     HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, MicroSlip,
     Micromath, MindlinAA, MindlinParameters, ModelA, ModelAA, ModelB, ModelC, NormalModel,
-    RollingModel, Rotation, Sphere, Stateless, Std, TangentialModel, TangentialParameters,
-    TimeStep, Vec3, Wall, effective_mass,
+    RollingModel, Rotation, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep,
+    Vec3, Wall, effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -310,53 +309,5 @@ fn paths(c: &mut Criterion) {
     group.finish();
 }
 
-/// The batch path beside the one-contact rows: the same pairs in blocks (gathered beforehand),
-/// `Std` square roots, every lane checked. `N` lanes a block.
-fn bench_blocks<F: Float, T: TangentialModel<F>, const N: usize>(
-    c: &mut Criterion,
-    name: &str,
-    law: ContactLaw<F, LinearSpringDashpot<F>, T, Std>,
-) where
-    Std: MathBackend<F>,
-{
-    let pairs = pairs::<F>();
-    let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
-    let dt = law.time_step(law.recommended_time_step(m), m).unwrap();
-    let gathered = blocks::<F, N>(&pairs);
-    let mut states = vec![[T::State::default(); N]; gathered.len()];
-    let mut group = c.benchmark_group("contact");
-    group.throughput(Throughput::Elements(BATCH as u64));
-    group.bench_function(name, |b| {
-        b.iter(|| {
-            let mut bound = law.at(dt);
-            let mut out = ContactBlock::default();
-            let mut sum = F::ZERO;
-            for (block, states) in gathered.iter().zip(states.iter_mut()) {
-                bound.sphere_pairs(block, states, &mut out);
-                sum += out.normal_force[0];
-            }
-            black_box(sum)
-        });
-    });
-    group.finish();
-}
-
-fn batches(c: &mut Criterion) {
-    let normal = LinearSpringDashpot::new(1000.0f64, 0.9).unwrap();
-    let p = TangentialParameters::new(285.7f64, 0.5, 0.5).unwrap();
-    let aa = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
-    bench_blocks::<_, _, LANES>(c, "batch/model_aa/f64_std", aa);
-    let a = ContactLaw::new(normal, ModelA(p)).with_backend::<Std>();
-    bench_blocks::<_, _, LANES>(c, "batch/model_a/f64_std", a);
-    let model_c = ContactLaw::new(normal, ModelC(p)).with_backend::<Std>();
-    bench_blocks::<_, _, LANES>(c, "batch/model_c/f64_std", model_c);
-    let frictionless = ContactLaw::new(normal, Frictionless).with_backend::<Std>();
-    bench_blocks::<_, _, LANES>(c, "batch/frictionless/f64_std", frictionless);
-    let normal = LinearSpringDashpot::new(1000.0f32, 0.9).unwrap();
-    let p = TangentialParameters::new(285.7f32, 0.5, 0.5).unwrap();
-    let law = ContactLaw::new(normal, ModelAA(p)).with_backend::<Std>();
-    bench_blocks::<_, _, { 2 * LANES }>(c, "batch/model_aa/f32_std", law);
-}
-
-criterion_group!(benches, laws, micro_slip, skipping, paths, batches);
+criterion_group!(benches, laws, micro_slip, skipping, paths);
 criterion_main!(benches);

@@ -1,8 +1,7 @@
 //! The touching pairs every per-contact benchmark times: 1 mm spheres at overlaps up to 1 % of
 //! the radius, random directions, velocities and spins (fixed seed), and how to run them through
-//! the kernel one contact at a time and in blocks.
+//! the kernel one contact at a time.
 
-use soft_sphere::batch::{ContactBlock, PairBlock};
 use soft_sphere::{CheckedSphere, ContactError, Float, Interaction, Law, Sphere, TimeStep, Vec3};
 
 use crate::random::Xorshift;
@@ -34,22 +33,6 @@ pub fn touching_pairs<F: Float>(count: usize) -> Vec<(Sphere<F>, Sphere<F>)> {
         .collect()
 }
 
-/// The pairs in blocks of `N` lanes (the last block filled with copies of the last pair, whose
-/// lanes the caller ignores).
-pub fn blocks<F: Float, const N: usize>(pairs: &[(Sphere<F>, Sphere<F>)]) -> Vec<PairBlock<F, N>> {
-    pairs
-        .chunks(N)
-        .map(|chunk| {
-            let mut block = PairBlock::default();
-            for lane in 0..N {
-                let (i, j) = chunk[lane.min(chunk.len() - 1)];
-                block.set(lane, &i, &j);
-            }
-            block
-        })
-        .collect()
-}
-
 /// Every pair one at a time, each sphere checked at every call as a C host's call does, each
 /// pair with its state.
 pub fn one_at_a_time<L: Law>(
@@ -68,25 +51,4 @@ pub fn one_at_a_time<L: Law>(
             bound.sphere_sphere(&i, &j, state)
         })
         .collect()
-}
-
-/// The same pairs through [`soft_sphere::BoundLaw::sphere_pairs`], `N` lanes a block; one
-/// outcome per pair, in order.
-pub fn in_blocks<L: Law, const N: usize>(
-    law: &L,
-    time_step: TimeStep<L::Float>,
-    pairs: &[Pair<L::Float>],
-    states: &mut [L::State],
-) -> Vec<Result<Interaction<L::Float>, ContactError>> {
-    let mut bound = law.at(time_step);
-    let mut outcomes = Vec::with_capacity(pairs.len());
-    let mut out = ContactBlock::default();
-    for (block, states) in blocks::<_, N>(pairs).iter().zip(states.chunks_mut(N)) {
-        let mut lanes = [L::State::default(); N];
-        lanes[..states.len()].copy_from_slice(states);
-        bound.sphere_pairs(block, &mut lanes, &mut out);
-        states.copy_from_slice(&lanes[..states.len()]);
-        outcomes.extend((0..states.len()).map(|lane| out.outcome(lane)));
-    }
-    outcomes
 }

@@ -6,8 +6,8 @@
 use host_tests::random::Xorshift;
 use soft_sphere::{
     Backup, CheckedPairs, CheckedSphere, ContactList, Interaction, LinearMaterial, LinearMixing,
-    ListArray, ListError, ListOutput, MaterialTable, ModelAA, Route, Sphere, SphereArrays,
-    SphereSlice, Spheres, SpringDisplacement, TimeStep, Vec3,
+    ListArray, ListError, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays, SphereSlice,
+    Spheres, SpringDisplacement, TimeStep, Vec3,
 };
 
 const RADIUS: f64 = 0.5e-3;
@@ -108,7 +108,6 @@ struct Outcome {
 
 fn evaluate(
     table: &Table,
-    route: Route,
     dt: TimeStep<f64>,
     spheres: &impl Spheres<f64>,
     (pairs, shifts, states): List<'_>,
@@ -122,8 +121,7 @@ fn evaluate(
         backup: vec![SpringDisplacement::default(); pairs.len()],
     };
     let mut loads = vec![Vec3::ZERO; 2 * n];
-    table.evaluate_by(
-        route,
+    table.evaluate(
         dt,
         spheres,
         ContactList {
@@ -179,7 +177,7 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
     let dt = table.time_step(1e-6, &arrays, &[]).unwrap();
     let states = preloaded(gas.pairs.len());
     let list = (&gas.pairs[..], &gas.shifts[..], &states[..]);
-    let reference = evaluate(&table, Route::OneAtATime, dt, &arrays, list).unwrap();
+    let reference = evaluate(&table, dt, &arrays, list).unwrap();
     let across = gas.shifts.iter().filter(|s| **s != Vec3::ZERO).count();
     let touching = reference
         .records
@@ -204,19 +202,8 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
         assert_eq!(direct, Ok(reference.records[k]), "pair {k}");
         assert_eq!(state, reference.states[k], "pair {k}");
     }
-    // Every route, both layouts: the same bits.
-    for route in [Route::Auto, Route::Blocks, Route::OneAtATime] {
-        assert_eq!(
-            evaluate(&table, route, dt, &arrays, list).as_ref(),
-            Ok(&reference),
-            "{route:?}"
-        );
-        assert_eq!(
-            evaluate(&table, route, dt, &slice, list).as_ref(),
-            Ok(&reference),
-            "{route:?}"
-        );
-    }
+    // The other layout: the same bits.
+    assert_eq!(evaluate(&table, dt, &slice, list).as_ref(), Ok(&reference));
     // After the call the backup holds the states as they were before it.
     assert_eq!(reference.backup, states);
 }
@@ -236,19 +223,17 @@ fn bad_shifts_and_material_arrays_are_refused_with_their_place() {
     let mut shifts = gas.shifts.clone();
     shifts[3].y = f64::NAN;
     let bad = (&gas.pairs[..], &shifts[..], &states[..]);
-    for route in [Route::Blocks, Route::OneAtATime] {
-        assert_eq!(
-            evaluate(&table, route, dt, &slice, bad).err(),
-            Some(ListError::Shift { pair: 3 })
-        );
-        let short = (&gas.pairs[..], &gas.shifts[1..], &states[..]);
-        assert_eq!(
-            evaluate(&table, route, dt, &slice, short).err(),
-            Some(ListError::Length(ListArray::Shifts))
-        );
-    }
+    assert_eq!(
+        evaluate(&table, dt, &slice, bad).err(),
+        Some(ListError::Shift { pair: 3 })
+    );
+    let short = (&gas.pairs[..], &gas.shifts[1..], &states[..]);
+    assert_eq!(
+        evaluate(&table, dt, &slice, short).err(),
+        Some(ListError::Length(ListArray::Shifts))
+    );
     // No shifts at all is a list without periodic images.
-    assert!(evaluate(&table, Route::Auto, dt, &slice, (&gas.pairs, &[], &states)).is_ok());
+    assert!(evaluate(&table, dt, &slice, (&gas.pairs, &[], &states)).is_ok());
     let short = SphereSlice {
         spheres: &checked,
         material: &gas.materials[1..],
@@ -264,14 +249,7 @@ fn bad_shifts_and_material_arrays_are_refused_with_their_place() {
         material: &past,
     };
     assert_eq!(
-        evaluate(
-            &table,
-            Route::Auto,
-            dt,
-            &past_table,
-            (&gas.pairs, &gas.shifts, &states)
-        )
-        .err(),
+        evaluate(&table, dt, &past_table, (&gas.pairs, &gas.shifts, &states)).err(),
         Some(ListError::Material {
             sphere: 6,
             material: 2

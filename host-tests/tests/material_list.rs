@@ -11,8 +11,8 @@ use soft_sphere::{
     Backup, CheckedPairs, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
     Interaction, Law, LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput,
     ListStats, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad,
-    Parameter, ParameterError, Route, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3,
-    Wall, effective_mass,
+    Parameter, ParameterError, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
+    effective_mass,
 };
 
 type Linear = LinearAA<f64>;
@@ -320,17 +320,15 @@ fn a_mixture_list_gives_the_one_contact_bits_step_after_step() {
         },
         turntable,
     ];
-    for route in ROUTES {
-        // Both walls, and the floor alone (the walls' sift reads one wall once); the drum and
-        // the turntable, and the drum alone.
-        mixture_bits(route, &both);
-        mixture_bits(route, &both[..1]);
-        mixture_bits(route, &turning);
-        mixture_bits(route, &turning[..1]);
-    }
+    // Both walls, and the floor alone (the walls' sift reads one wall once); the drum and
+    // the turntable, and the drum alone.
+    mixture_bits(&both);
+    mixture_bits(&both[..1]);
+    mixture_bits(&turning);
+    mixture_bits(&turning[..1]);
 }
 
-fn mixture_bits(route: Route, walls: &[MaterialWall<f64>]) {
+fn mixture_bits(walls: &[MaterialWall<f64>]) {
     let t = table();
     let mut m = Mixture::new(60, 7);
     let dt = t.coarse_time_step(2.0e-6, &m.arrays(), walls).unwrap();
@@ -365,7 +363,7 @@ fn mixture_bits(route: Route, walls: &[MaterialWall<f64>]) {
             },
             records: Some(&mut records),
         };
-        let stats = t.evaluate_by(route, dt, &m.arrays(), list, out).unwrap();
+        let stats = t.evaluate(dt, &m.arrays(), list, out).unwrap();
         let (ref_force, ref_torque, outcomes) =
             one_at_a_time(&t, &m, walls, dt, (&mut ref_states, &mut ref_wall_states)).unwrap();
         assert_eq!(bits(&force), bits(&ref_force), "step {step}: forces");
@@ -449,8 +447,7 @@ fn mixture_bits(route: Route, walls: &[MaterialWall<f64>]) {
     );
 }
 
-/// A fresh list evaluation by every route, whose outcomes must agree, each compared with what
-/// it leaves.
+/// A fresh list evaluation, compared with what it leaves.
 fn try_evaluate(
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
@@ -477,13 +474,12 @@ fn evaluate_plain<L: Law<Float = f64>>(
     states: &mut [L::State],
 ) -> Plain {
     let pairs = CheckedPairs::new(&m.pairs, &[], m.position.len()).unwrap();
-    evaluate_pairs_by(Route::Auto, t, &m.arrays(), pairs, dt, states)
+    evaluate_checked_pairs(t, &m.arrays(), pairs, dt, states)
 }
 
-/// One evaluation of `pairs` (no walls or records) by `route` from `states`, advanced in
-/// place; the forces and torques it adds to zero.
-fn evaluate_pairs_by<L: Law<Float = f64>>(
-    route: Route,
+/// One evaluation of `pairs` (no walls or records) from `states`, advanced in place; the
+/// forces and torques it adds to zero.
+fn evaluate_checked_pairs<L: Law<Float = f64>>(
     t: &MaterialTable<L, 3>,
     arrays: &SphereArrays<'_, f64>,
     pairs: CheckedPairs<'_, f64>,
@@ -511,58 +507,13 @@ fn evaluate_pairs_by<L: Law<Float = f64>>(
         },
         records: None,
     };
-    let outcome = t.evaluate_by(route, dt, arrays, list, out);
+    let outcome = t.evaluate(dt, arrays, list, out);
     (outcome, force, torque)
 }
 
 /// [`try_evaluate`] with sphere `poisoned.0`'s force (or, when `poisoned.1`, torque) made NaN
 /// before the call, as a caller's array might hold it.
 fn try_evaluate_loaded(
-    t: &MaterialTable<Linear, 3>,
-    arrays: &SphereArrays<'_, f64>,
-    (pairs, walls): (&[[u32; 2]], &[MaterialWall<f64>]),
-    dt: soft_sphere::TimeStep<f64>,
-    poisoned: Option<(usize, bool)>,
-) -> Result<(), ListError> {
-    let outcomes = ROUTES.map(|route| try_route(route, t, arrays, (pairs, walls), dt, poisoned));
-    assert!(outcomes.iter().all(|o| *o == outcomes[0]), "{outcomes:?}");
-    outcomes[0]
-}
-
-const ROUTES: [Route; 3] = [Route::Auto, Route::Blocks, Route::OneAtATime];
-
-#[test]
-fn the_routes_choose_blocks_as_documented() {
-    type Hertzian = soft_sphere::HertzAA<f32>;
-    // Blocks and one at a time are what they say; the automatic route takes blocks only where
-    // the law says they pay, which no law does today (they measured slower: `Law::VECTORISES`).
-    assert!(Route::Blocks.uses_blocks::<Linear>() && Route::Blocks.uses_blocks::<Hertzian>());
-    assert!(!Route::OneAtATime.uses_blocks::<Linear>());
-    assert!(!Route::OneAtATime.uses_blocks::<Hertzian>());
-    assert!(!Route::Auto.uses_blocks::<Linear>() && !Route::Auto.uses_blocks::<Hertzian>());
-    assert!(!Route::Auto.uses_blocks::<LinearAA<f32>>());
-}
-
-/// An evaluation of pairs checked elsewhere, which must leave the caller's arrays as they were
-/// when it refuses.
-fn route_checked(
-    route: Route,
-    t: &MaterialTable<Linear, 3>,
-    arrays: &SphereArrays<'_, f64>,
-    pairs: CheckedPairs<'_, f64>,
-    dt: soft_sphere::TimeStep<f64>,
-) -> Result<(), ListError> {
-    let mut states = vec![State::default(); pairs.len()];
-    let (result, force, torque) = evaluate_pairs_by(route, t, arrays, pairs, dt, &mut states);
-    if result.is_err() {
-        let zero = |v: &[Vec3<f64>]| v.iter().all(|x| *x == Vec3::ZERO);
-        assert!(zero(&force) && zero(&torque) && states.iter().all(|s| *s == State::default()));
-    }
-    result.map(|_| ())
-}
-
-fn try_route(
-    route: Route,
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
     (pairs, walls): (&[[u32; 2]], &[MaterialWall<f64>]),
@@ -587,8 +538,7 @@ fn try_route(
     let mut records = vec![Interaction::Apart; contacts];
     let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let pairs = CheckedPairs::new(pairs, &[], n)?;
-    let result = t.evaluate_by(
-        route,
+    let result = t.evaluate(
         dt,
         arrays,
         ContactList {
@@ -609,10 +559,24 @@ fn try_route(
     );
     if result.is_err() {
         let after = bits(&(&states, &wall_states, &force, &torque));
-        assert_eq!(
-            after, before,
-            "{route:?}: {result:?} changed the caller's arrays"
-        );
+        assert_eq!(after, before, "{result:?} changed the caller's arrays");
+    }
+    result.map(|_| ())
+}
+
+/// An evaluation of pairs checked elsewhere, which must leave the caller's arrays as they were
+/// when it refuses.
+fn evaluate_checked(
+    t: &MaterialTable<Linear, 3>,
+    arrays: &SphereArrays<'_, f64>,
+    pairs: CheckedPairs<'_, f64>,
+    dt: soft_sphere::TimeStep<f64>,
+) -> Result<(), ListError> {
+    let mut states = vec![State::default(); pairs.len()];
+    let (result, force, torque) = evaluate_checked_pairs(t, arrays, pairs, dt, &mut states);
+    if result.is_err() {
+        let zero = |v: &[Vec3<f64>]| v.iter().all(|x| *x == Vec3::ZERO);
+        assert!(zero(&force) && zero(&torque) && states.iter().all(|s| *s == State::default()));
     }
     result.map(|_| ())
 }
@@ -805,15 +769,13 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     let few_dt = t.coarse_time_step(1.0e-6, &few.arrays(), &walls).unwrap();
     let pair = pairs.iter().position(|p| p.contains(&19)).unwrap();
     assert!(pair <= 4);
-    for route in ROUTES {
-        let checked = CheckedPairs::new(&pairs, &[], 20).unwrap();
-        assert_eq!(
-            route_checked(route, &t, &few.arrays(), checked, few_dt),
-            Err(ListError::PairIndex { pair })
-        );
-        let checked = CheckedPairs::new(&few.pairs, &[], 19).unwrap();
-        assert_eq!(route_checked(route, &t, &m.arrays(), checked, dt), Ok(()));
-    }
+    let checked = CheckedPairs::new(&pairs, &[], 20).unwrap();
+    assert_eq!(
+        evaluate_checked(&t, &few.arrays(), checked, few_dt),
+        Err(ListError::PairIndex { pair })
+    );
+    let checked = CheckedPairs::new(&few.pairs, &[], 19).unwrap();
+    assert_eq!(evaluate_checked(&t, &m.arrays(), checked, dt), Ok(()));
     // A contact refused: coincident centres, then an overflowing force, each with its pair.
     let mut pairs = m.pairs.clone();
     pairs[5] = [4, 4];

@@ -254,18 +254,16 @@ fn the_stable_phase_is_the_critical_step_times_the_frequency_at_every_mass() {
 
 /// A Hertz contact just inside and just past its own limit (the step made for its overlap, its
 /// radii and its masses from the closed forms, `w0 = sqrt(2 E* a / m*)`, `a = sqrt(R* delta)`):
-/// the one-contact path evaluates the first and refuses the second, and the batch path gives
-/// each lane the same verdict.
+/// the one-contact path evaluates the first and refuses the second, and the bound law on
+/// checked spheres (the engines' path) gives the same verdict.
 #[test]
-fn a_hertz_contact_at_its_own_limit_gets_the_same_verdict_in_a_block() {
-    use soft_sphere::batch::{ContactBlock, PairBlock};
+fn a_hertz_contact_at_its_own_limit_gets_the_same_verdict_on_every_path() {
     // Declared for a slow impact, so that the step check at design passes both steps below.
     let largest = HertzImpact {
         speed: 1.0e-3,
         effective_radius: 4.0e-4,
     };
-    let law = ContactLaw::new(Hertz::new(2.0e8, 0.6, largest).unwrap(), Frictionless)
-        .with_backend::<soft_sphere::Std>();
+    let law = ContactLaw::new(Hertz::new(2.0e8, 0.6, largest).unwrap(), Frictionless);
     let (r_i, r_j, overlap) = (1.0e-3_f64, 0.6e-3, 2.0e-5);
     let i = Sphere::solid(Vec3::ZERO, r_i, 2500.0);
     let j = Sphere::solid(Vec3::new(r_i + r_j - overlap, 0.0, 0.0), r_j, 7800.0);
@@ -277,14 +275,11 @@ fn a_hertz_contact_at_its_own_limit_gets_the_same_verdict_in_a_block() {
         let step = law.coarse_time_step(fraction * limit, m_star).unwrap();
         let one = law.sphere_sphere(&i, &j, &mut (), step);
         assert_eq!(one.is_ok(), within, "{fraction}: {one:?}");
-        let mut block = PairBlock::<f64, 4>::default();
-        for lane in 0..4 {
-            block.set(lane, &i, &j);
-        }
-        let mut out = ContactBlock::default();
-        law.at(step).sphere_pairs(&block, &mut [(); 4], &mut out);
-        for lane in 0..4 {
-            assert_eq!(out.outcome(lane), one, "{fraction}, lane {lane}");
-        }
+        let (a, b) = (
+            CheckedSphere::new(i).unwrap(),
+            CheckedSphere::new(j).unwrap(),
+        );
+        let bound = law.at(step).sphere_sphere(&a, &b, &mut ());
+        assert_eq!(bound, one, "{fraction}");
     }
 }

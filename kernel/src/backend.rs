@@ -53,13 +53,13 @@ macro_rules! impl_libm {
 impl_libm!(f32, sqrtf, atan2f, logf);
 impl_libm!(f64, sqrt, atan2, log);
 
-/// `std`'s square root (the `sqrt` instruction LLVM knows, so a batch of contacts
-/// ([`crate::batch`]) evaluates its roots in vector registers), with [`Libm`]'s `atan2` and `ln`.
+/// `std`'s square root (the `sqrt` instruction LLVM knows, so the list seam's loops over a
+/// chunk's roots widen into vector registers), with [`Libm`]'s `atan2` and `ln`.
 ///
 /// A square root is correctly rounded in IEEE 754 whoever computes it, so `Std` gives the same bits
 /// as [`Libm`] on every target; `atan2` and `ln` are not, and `std`'s come from the platform's C
 /// library, so they stay libm's. `libm`'s own square root is written so that LLVM does not see a
-/// square root it can widen (on x86-64 an inline `sqrtsd`), which keeps a batch scalar. Needs the
+/// square root it can widen (on x86-64 an inline `sqrtsd`), which keeps such loops scalar. Needs the
 /// `std` feature; the kernel stays `no_std` without it.
 #[cfg(feature = "std")]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -141,27 +141,17 @@ impl<F: Float> TryFrom<Sphere<F>> for CheckedSphere<F> {
     }
 }
 
-/// The checks of a sphere in their order, each failure condition with its error, the first that
-/// holds winning: finiteness first, so the sign tests never see NaN. The one order both
-/// [`check`] and the batch path (which selects among them without branching) follow.
-#[inline(always)]
-pub(crate) fn sphere_checks<F: Float>(sphere: &Sphere<F>) -> [(bool, ContactError); 3] {
-    [
-        (!sphere.is_finite(), ContactError::NonFiniteInput),
-        (sphere.radius <= F::ZERO, ContactError::NonPositiveRadius),
-        (sphere.mass <= F::ZERO, ContactError::NonPositiveMass),
-    ]
-}
-
 /// The checks of [`CheckedSphere::new`], in place (the per-call path checks its spheres without
-/// copying them).
+/// copying them), in their order: finiteness first, so the sign tests never see NaN.
 #[inline(always)]
 pub(crate) fn check<F: Float>(sphere: &Sphere<F>) -> Result<(), ContactError> {
-    match sphere_checks(sphere)
-        .into_iter()
-        .find(|&(failed, _)| failed)
-    {
-        Some((_, error)) => Err(error),
-        None => Ok(()),
+    if !sphere.is_finite() {
+        Err(ContactError::NonFiniteInput)
+    } else if sphere.radius <= F::ZERO {
+        Err(ContactError::NonPositiveRadius)
+    } else if sphere.mass <= F::ZERO {
+        Err(ContactError::NonPositiveMass)
+    } else {
+        Ok(())
     }
 }

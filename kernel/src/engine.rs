@@ -1,7 +1,6 @@
 //! What an engine calls: any contact law as one type parameter ([`Law`]), bound to its checked
 //! time step ([`BoundLaw`]) and evaluated on checked spheres with no repeated checks.
 
-use crate::batch::{ContactBlock, PairBlock};
 use crate::checked::CheckedSphere;
 use crate::error::{ContactError, ParameterError};
 use crate::float::Float;
@@ -66,12 +65,6 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// The per-contact state the law keeps: `()` for laws that store nothing, a
     /// [`SpringDisplacement`](crate::SpringDisplacement) for the stored-spring laws.
     type State: ContactState;
-
-    /// Whether [`BoundLaw::sphere_pairs`] is worth calling instead of one contact at a time.
-    /// False today for every law: with the per-contact stability check, blocks measured slower
-    /// than single calls even with 256-bit vectors (`contact_batch_bench`, `x86-64-v3`).
-    /// Either way the bits are the same.
-    const VECTORISES: bool;
 
     /// Checks a time step; see [`ContactLaw::time_step`](crate::ContactLaw::time_step).
     ///
@@ -165,14 +158,6 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         deferred: sealed::Deferred,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
-    /// What [`BoundLaw::sphere_pairs`] calls.
-    fn evaluate_pairs<const WIDTH: usize>(
-        bound: &mut BoundLaw<Self>,
-        block: &PairBlock<Self::Float, WIDTH>,
-        states: &mut [Self::State; WIDTH],
-        out: &mut ContactBlock<Self::Float, WIDTH>,
-    );
-
     /// What [`BoundLaw::sphere_wall`] calls.
     ///
     /// # Errors
@@ -255,12 +240,6 @@ impl<L: Law> BoundLaw<L> {
     /// [`ContactError::PastStableStep`].
     pub fn inaccurate_contacts(&self) -> usize {
         self.unstable
-    }
-
-    /// Counts `count` more contacts evaluated past the accuracy limit.
-    #[inline(always)]
-    pub(crate) fn count_unstable(&mut self, count: impl Into<usize>) {
-        self.unstable += count.into();
     }
 
     /// The law.

@@ -39,8 +39,8 @@ pub(crate) struct ContactFrame<F> {
 }
 
 /// Where two checked spheres stand before any root is taken: the offset from i to j, its squared
-/// length and the sum of the radii. Both the one-contact path and the batch path
-/// ([`crate::batch`]) classify a pair by it, so they agree on where contact begins.
+/// length and the sum of the radii. Both the one-contact path and the list seam's sift classify
+/// a pair by it, so they agree on where contact begins.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Separation<F> {
     pub offset: Vec3<F>,
@@ -99,19 +99,6 @@ impl<F: Float> Separation<F> {
             inverse_distance,
             overlap,
         }
-    }
-
-    /// The contact frame of an overlapping, non-coincident pair. Branch-free, so a batch can
-    /// compute it for every lane and keep it only where the pair touches.
-    #[inline(always)]
-    pub(crate) fn frame<M: MathBackend<F>>(
-        &self,
-        i: &Sphere<F>,
-        j: &Sphere<F>,
-        lever_arm: LeverArm,
-    ) -> ContactFrame<F> {
-        let roots = Self::roots::<M>(self.distance_squared, self.reach);
-        self.frame_with(roots, i, j, lever_arm)
     }
 
     /// The contact frame from the separation's [`roots`](Self::roots).

@@ -3,7 +3,6 @@
 use core::marker::PhantomData;
 
 use crate::backend::MathBackend;
-use crate::batch::{self, ContactBlock, PairBlock};
 use crate::body::{Sphere, effective_mass};
 use crate::checked::{self, CheckedSphere};
 use crate::engine::{BoundLaw, Law, sealed};
@@ -591,9 +590,7 @@ where
 
     /// The forces of a touching contact, the state to keep and the contact's tangent stiffness
     /// ([`NormalModel::tangent_stiffness`]), not yet checked for finiteness or stability; `turned`
-    /// as for [`interaction`](Self::interaction). Straight-line code apart from
-    /// what the slots branch on, so the batch path ([`crate::batch`]) runs it for every lane and
-    /// keeps it where the lane touches: one computation for both paths, the same bits.
+    /// as for [`interaction`](Self::interaction).
     #[inline(always)]
     pub(crate) fn touching(
         &self,
@@ -713,12 +710,6 @@ where
 {
     type Float = F;
     type State = Ro::State<T::State>;
-    // Blocks do not pay since every contact is checked against its step: the batch path's check
-    // made after the widened loop cost more than the vectors saved (`contact_batch_bench`,
-    // x86-64-v3: 59 ns per contact in blocks against 51 one at a time, and 20 in blocks
-    // without the check). Until a form of it that the compiler keeps widened is found, engines
-    // take one contact at a time; the batch path stays exact and tested.
-    const VECTORISES: bool = false;
 
     fn time_step(
         &self,
@@ -811,16 +802,6 @@ where
         )?;
         let turned = Some(sifted.turned);
         bound_frame::<_, _, _, _, _, _, false>(bound, (i, j), Some(frame), (state, turned))
-    }
-
-    #[inline(always)]
-    fn evaluate_pairs<const WIDTH: usize>(
-        bound: &mut BoundLaw<Self>,
-        block: &PairBlock<F, WIDTH>,
-        states: &mut [Ro::State<T::State>; WIDTH],
-        out: &mut ContactBlock<F, WIDTH>,
-    ) {
-        batch::sphere_pairs(bound, block, states, out);
     }
 
     #[inline(always)]

@@ -125,7 +125,7 @@
 //!   [`Hertz`] overlap past the declared impact's, a wall law stiffer than the step's are refused
 //!   with [`ContactError::PastStableStep`], or counted when the step
 //!   [tolerates](TimeStep::tolerating_unstable_contacts) them. (`unstable_contacts.rs`,
-//!   `batch.rs`, `scene.rs`)
+//!   `scene.rs`)
 //! - **Whole lists are one contact at a time.** [`MaterialTable::evaluate`] gives each contact
 //!   of a list the one-contact bits with its pair of materials' law, adds the forces in list
 //!   order, and on an error puts every state and force back and names the sphere, pair or wall;
@@ -135,11 +135,6 @@
 //! - **Rest.** A sphere resting on a plate for 10^6 steps does not drift or gain energy; a stored
 //!   spring holds a sphere on an incline below the friction angle, the stateless law lets it creep
 //!   (1 mm/s at 20 degrees, `mu` = 0.5). (`stress.rs`)
-//! - **Batches are the same bits.** [`BoundLaw::sphere_pairs`] gives, lane by lane, the bits,
-//!   state handling and error of the one-contact path, for every slot, both precisions, both
-//!   lever arms, every status, in any lane position and block length, on [`Libm`] and `Std`.
-//!   (`batch.rs`; properties `random_blocks_give_the_one_contact_bits_*`,
-//!   `arbitrary_bits_give_the_one_contact_outcome`)
 //! - **Pay for what you use.** [`Frictionless`], [`NonRotating`] and [`Rotating`] are zero-sized;
 //!   [`Stateless`], [`ModelC`], [`MindlinStateless`] and [`Frictionless`] keep no per-contact
 //!   state; the stored-spring laws keep three floats, the stored Mindlin laws four, the
@@ -176,14 +171,6 @@
 //! threads and their loads added in list order on one, so the sums are the one-thread bits.
 //! [`ContactLaw::stored_energy`] says what a contact's springs hold, for energy accounts.
 //!
-//! Many contacts at once: [`BoundLaw::sphere_pairs`] evaluates a block of `WIDTH` pairs given as
-//! arrays ([`batch`]), branch-free, so the compiler puts the lanes in vector registers;
-//! [`batch::BlockGroup`] gathers such blocks from an engine's own arrays and scatters the
-//! outcomes back (the list seam and the C ABI use it). It pays
-//! with a square root LLVM can widen: the `Std` backend (feature `std`: std's `sqrt`, the same
-//! correctly rounded bits as [`Libm`]'s) and a build for the CPU
-//! (`RUSTFLAGS="-C target-cpu=x86-64-v3"`); [`Law::VECTORISES`] says whether it does.
-//!
 //! ## Testing an engine around it
 //!
 //! [`checks`] holds the guarantees above as functions a user's property tests and fuzz targets
@@ -208,7 +195,6 @@
 extern crate std;
 
 mod backend;
-pub mod batch;
 mod body;
 mod checked;
 pub mod checks;
@@ -256,9 +242,7 @@ pub use laws::{
     HertzAA, HertzAALuding, HertzFrictionless, HertzMicroSlip, HertzStateless, LinearAA,
     LinearAALuding, LinearFrictionless, LinearStateless,
 };
-pub use list::{
-    Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall, Route,
-};
+pub use list::{Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall};
 pub use material::Material;
 pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
 pub use normal::{

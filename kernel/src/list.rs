@@ -9,7 +9,6 @@
 //! the spheres present ([`MaterialTable::time_step`]): every pair of materials present at the
 //! smallest effective mass its spheres give, and every wall's material.
 
-use crate::batch::{BlockGroup, BlockPairs};
 use crate::body::{Sphere, effective_mass};
 use crate::checked::CheckedSphere;
 use crate::engine::sealed::Deferred;
@@ -25,41 +24,10 @@ use crate::sifted::{Sifts, shift};
 use crate::spheres::Spheres;
 use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
+use crate::tangential::ContactState;
 use crate::time_step::TimeStep;
 use crate::vector::{Vec3, all_finite};
 use crate::wall::Wall;
-
-/// How [`MaterialTable::evaluate_by`] evaluates the touching pairs: the same results by every
-/// route.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Route {
-    /// Blocks where the law says they pay ([`Law::VECTORISES`]), else one at a time: today one
-    /// at a time for every law, which measured fastest (`list_bench`, `contact_batch_bench`).
-    #[default]
-    Auto,
-    /// Sorted by pair of materials into blocks of [`LANES`](crate::batch::LANES) through the
-    /// batch path ([`BlockGroup`]). The blocks are evaluated in vector registers (with the `Std`
-    /// backend in an AVX build), but gathering them from the arrays, sorting and scattering cost
-    /// more than that saves: 1.3 times slower than one at a time in `list_bench` (`x86-64-v3`,
-    /// 10,000 spheres).
-    Blocks,
-    /// One sifted pair at a time by the one-contact path's formulas, the chunk's roots taken
-    /// ahead ([`crate::Law::sifted_roots`]).
-    OneAtATime,
-}
-
-impl Route {
-    /// Whether this route evaluates law `L`'s touching pairs in blocks: the one place the choice
-    /// between blocks and single calls is made (the list seam and the C ABI's arrays entry ask
-    /// it).
-    pub fn uses_blocks<L: Law>(self) -> bool {
-        match self {
-            Route::Auto => L::VECTORISES,
-            Route::Blocks => true,
-            Route::OneAtATime => false,
-        }
-    }
-}
 
 /// A wall (a plane or a cylinder) made of a material of the table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -451,7 +419,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall) with its law. Every sphere is
     /// checked once. Each state is advanced (reset where apart), each touching contact's forces
     /// and torques are added into `out.force` and `out.torque` in list order (so the sums are
-    /// the same bits by any route), and `out.records`, when given, receives every contact's
+    /// the same bits on any number of threads), and `out.records`, when given, receives every contact's
     /// outcome. If any contact is refused, every state, force and torque is put back from
     /// `out.backup` before the error is returned.
     ///
@@ -515,23 +483,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
-        self.evaluate_by(Route::Auto, time_step, spheres, list, out)
-    }
-
-    /// [`MaterialTable::evaluate`] by a chosen [`Route`]: the same bits, states, records and
-    /// errors by any route; only the speed differs.
-    ///
-    /// # Errors
-    /// As [`MaterialTable::evaluate`].
-    pub fn evaluate_by(
-        &self,
-        route: Route,
-        time_step: TimeStep<L::Float>,
-        spheres: &impl Spheres<L::Float>,
-        list: ContactList<'_, L::Float, L::State>,
-        out: ListOutput<'_, L::Float, L::State>,
-    ) -> Result<ListStats<L::Float>, ListError> {
-        self.evaluate_with(route, (&Serial, &mut []), time_step, spheres, list, out)
+        self.evaluate_with((&Serial, &mut []), time_step, spheres, list, out)
     }
 
     /// [`MaterialTable::evaluate`] with the pairs spread over `executor`'s threads: each
@@ -552,26 +504,17 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
-        self.evaluate_with(
-            Route::Auto,
-            (executor, loads),
-            time_step,
-            spheres,
-            list,
-            out,
-        )
+        self.evaluate_with((executor, loads), time_step, spheres, list, out)
     }
 
     fn evaluate_with<E: Executor>(
         &self,
-        route: Route,
         (executor, loads): (&E, &mut [PairLoad<L::Float>]),
         time_step: TimeStep<L::Float>,
         spheres: &impl Spheres<L::Float>,
         list: ContactList<'_, L::Float, L::State>,
         out: ListOutput<'_, L::Float, L::State>,
     ) -> Result<ListStats<L::Float>, ListError> {
-        let blocks = route.uses_blocks::<L>();
         let n = spheres.len();
         let (pairs, shifts, walls) = (list.pairs.pairs(), list.pairs.shifts(), list.walls);
         let contacts =
@@ -626,17 +569,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         let mut bound: [[BoundLaw<L>; MATERIALS]; MATERIALS] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
         let states = (&mut *list.pair_states, &mut *saved_pairs);
-        // Each route compiled on its own, so that neither's code shapes the other's loop.
-        let outcome = if blocks {
-            evaluate_pairs::<L, MATERIALS, true>(
-                spheres,
-                (pairs, shifts, 0),
-                states,
-                &mut bound,
-                &mut sink,
-            )
-            .map(|()| 0)
-        } else if E::PARALLEL && !loads.is_empty() {
+        let outcome = if E::PARALLEL && !loads.is_empty() {
             spread_pairs(
                 executor,
                 spheres,
@@ -647,7 +580,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
                 &mut sink,
             )
         } else {
-            evaluate_pairs::<L, MATERIALS, false>(
+            evaluate_pairs::<L, MATERIALS>(
                 spheres,
                 (pairs, shifts, 0),
                 states,
@@ -816,11 +749,11 @@ fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
 pub(crate) type Stretch<'a, F> = (&'a [[u32; 2]], &'a [Vec3<F>], usize);
 
 /// Every pair, chunk by chunk: each chunk's states copied into `saved` just before it is
-/// touched (while they are in cache), then sifted, evaluated (in blocks or one at a time) and
+/// touched (while they are in cache), then sifted, evaluated one at a time and
 /// committed in list order. `offset` is the list place of `pairs[0]`. Stops at the first chunk
 /// with a refused pair, naming the first in list order, with how many of these pairs' states it
 /// had copied (and may have changed).
-pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>(
+pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts, offset): Stretch<'_, L::Float>,
     (states, saved): (&mut [L::State], &mut [L::State]),
@@ -828,7 +761,7 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
     sink: &mut impl Commit<L::Float>,
 ) -> Result<(), (ListError, usize)> {
     let spheres = &spheres.evened();
-    let mut staged = Staged::<L::Float, L::State>::new();
+    let mut sifts = Sifts::<L::Float>::new();
     let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
     for (c, ((chunk, states), saved)) in chunks.zip(saved.chunks_mut(SIFT)).enumerate() {
         let local = c * SIFT;
@@ -841,31 +774,17 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize, const BLOCKS: bool>
         }
         let states = (&mut *states, &*saved);
         let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
-        let found = staged.sifts.sift(spheres, (chunk, shifts));
+        let found = sifts.sift(spheres, (chunk, shifts));
         let mut tally = sink.begin_chunk(first, chunk.len());
-        let failed = if BLOCKS {
-            let failed = staged.in_blocks(spheres, (chunk, shifts), states, found, bound);
-            if let (None, Some(stage)) = (failed, &staged.blocks) {
-                for &k in &staged.sifts.places[..found] {
-                    let k = usize::from(k);
-                    if stage.touches[k] {
-                        let pair = chunk[k].map(|x| x as usize);
-                        let forces = &stage.forces[k];
-                        sink.pair(first + k, pair, forces);
-                        tally.count(forces.overlap, forces.sliding);
-                    }
-                }
-            }
-            failed
-        } else {
-            staged.one_at_a_time(
-                spheres,
-                (chunk, shifts),
-                states,
-                found,
-                (bound, sink, first, &mut tally),
-            )
-        };
+        let failed = one_at_a_time(
+            (&mut sifts, found),
+            spheres,
+            (chunk, shifts),
+            states,
+            bound,
+            sink,
+            (first, &mut tally),
+        );
         sink.end_chunk(tally);
         if let Some((k, error)) = failed {
             let pair = first + k;
@@ -953,159 +872,66 @@ fn next_reaching<F: Float, S: Default>(
     None
 }
 
-/// The working memory of one chunk: the sifted pairs and the batch path's blocks.
-struct Staged<F: Float, S> {
-    sifts: Sifts<F>,
-    /// The batch path's part, made only by the blocks route (tens of kB that the single calls
-    /// would otherwise clear for nothing, once per thread's stretch).
-    blocks: Option<BlockStage<F, S>>,
-}
-
-/// The batch path's working memory of one chunk: the sifted places sorted by pair of
-/// materials, each place's forces and whether it touches, and the blocks.
-struct BlockStage<F: Float, S> {
-    sorted: [u16; SIFT],
-    forces: [ContactForces<F>; SIFT],
-    touches: [bool; SIFT],
-    group: BlockGroup<F, S>,
-}
-
-impl<F: Float, S: crate::tangential::ContactState> Staged<F, S> {
-    fn new() -> Self {
-        Self {
-            sifts: Sifts::new(),
-            blocks: None,
-        }
-    }
-
-    /// The sifted pairs one at a time by the one-contact path's formulas, their roots taken for
-    /// the whole chunk first ([`Law::sifted_roots`]), each touching pair committed
-    /// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
-    /// forces the caller puts back); returns the first refused. The forces and states are tested
-    /// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
-    /// when that test or a contact fails, [`first_refused`] re-runs the pairs checked to
-    /// name the first refused in list order.
-    #[inline(always)]
-    fn one_at_a_time<L: Law<Float = F, State = S>, const MATERIALS: usize>(
-        &mut self,
-        spheres: &impl Spheres<F>,
-        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-        (states, saved): (&mut [S], &[S]),
-        found: usize,
-        (bound, sink, first, tally): (
-            &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
-            &mut impl Commit<F>,
-            usize,
-            &mut Tally<F>,
-        ),
-    ) -> Option<(usize, ContactError)> {
-        // Counted in a local copy, which stays in registers across the stores of the loads.
-        let mut counted = *tally;
-        L::sifted_roots(&mut self.sifts, found, saved, Deferred(()));
-        let mut probe = F::ZERO;
-        let mut finite_states = true;
-        for (place, &k) in self.sifts.places[..found].iter().enumerate() {
-            let k = usize::from(k);
-            let [i, j] = chunk[k].map(|x| x as usize);
-            let law = &mut bound[spheres.material(i) as usize][spheres.material(j) as usize];
-            let (a, b) = (
-                CheckedSphere::trusted(spheres.sphere(i)),
-                CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
-            );
-            let sifted = self.sifts.pair(place);
-            let mut state = saved[k];
-            match law.sphere_sphere_sifted(&a, &b, &sifted, &mut state) {
-                Ok(Interaction::Touching(forces)) => {
-                    probe += forces.finite_probe();
-                    finite_states &= state.is_finite();
-                    sink.pair(first + k, [i, j], &forces);
-                    counted.count(forces.overlap, forces.sliding);
-                }
-                Ok(Interaction::Apart) => {}
-                Err(error) => {
-                    let earlier = &self.sifts.places[..place];
-                    let refused = first_refused(spheres, (chunk, shifts), saved, earlier, bound);
-                    return Some(refused.unwrap_or((k, error)));
-                }
+/// The sifted pairs one at a time by the one-contact path's formulas, their roots taken for
+/// the whole chunk first ([`Law::sifted_roots`]), each touching pair committed
+/// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
+/// forces the caller puts back); returns the first refused. The forces and states are tested
+/// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
+/// when that test or a contact fails, [`first_refused`] re-runs the pairs checked to
+/// name the first refused in list order.
+#[inline(always)]
+fn one_at_a_time<L: Law, const MATERIALS: usize>(
+    (sifts, found): (&mut Sifts<L::Float>, usize),
+    spheres: &impl Spheres<L::Float>,
+    (chunk, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
+    (states, saved): (&mut [L::State], &[L::State]),
+    bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
+    sink: &mut impl Commit<L::Float>,
+    (first, tally): (usize, &mut Tally<L::Float>),
+) -> Option<(usize, ContactError)> {
+    // Counted in a local copy, which stays in registers across the stores of the loads.
+    let mut counted = *tally;
+    L::sifted_roots(sifts, found, saved, Deferred(()));
+    let mut probe = <L::Float as Float>::ZERO;
+    let mut finite_states = true;
+    for (place, &k) in sifts.places[..found].iter().enumerate() {
+        let k = usize::from(k);
+        let [i, j] = chunk[k].map(|x| x as usize);
+        let law = &mut bound[spheres.material(i) as usize][spheres.material(j) as usize];
+        let (a, b) = (
+            CheckedSphere::trusted(spheres.sphere(i)),
+            CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
+        );
+        let sifted = sifts.pair(place);
+        let mut state = saved[k];
+        match law.sphere_sphere_sifted(&a, &b, &sifted, &mut state) {
+            Ok(Interaction::Touching(forces)) => {
+                probe += forces.finite_probe();
+                finite_states &= state.is_finite();
+                sink.pair(first + k, [i, j], &forces);
+                counted.count(forces.overlap, forces.sliding);
             }
-            states[k] = state;
-        }
-        *tally = counted;
-        if probe.is_finite() && finite_states {
-            return None;
-        }
-        // A finite-valued probe that overflowed finds nothing: the chunk stands as evaluated.
-        first_refused(
-            spheres,
-            (chunk, shifts),
-            saved,
-            &self.sifts.places[..found],
-            bound,
-        )
-    }
-
-    /// The sifted pairs through the batch path: sorted by pair of materials (a block holds one
-    /// law), gathered in groups of blocks straight from the arrays, evaluated, and each pair's
-    /// forces and state kept. Returns the first refused pair in list order.
-    #[inline(always)]
-    fn in_blocks<L: Law<Float = F, State = S>, const MATERIALS: usize>(
-        &mut self,
-        spheres: &impl Spheres<F>,
-        (chunk, shifts): (&[[u32; 2]], &[Vec3<F>]),
-        (states, saved): (&mut [S], &[S]),
-        found: usize,
-        bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
-    ) -> Option<(usize, ContactError)> {
-        let material = |k: usize| spheres.material(k) as usize;
-        let key = |k: usize| {
-            let [i, j] = chunk[k].map(|x| material(x as usize));
-            (i.min(j), i.max(j))
-        };
-        // A counting sort by pair of materials, stable, so each pair's run keeps list order.
-        let mut counts = [[0usize; MATERIALS]; MATERIALS];
-        for &k in &self.sifts.places[..found] {
-            let (a, b) = key(usize::from(k));
-            counts[a][b] += 1;
-        }
-        let mut starts = [[0usize; MATERIALS]; MATERIALS];
-        let mut next = 0;
-        for (row, starts) in counts.iter().zip(starts.iter_mut()) {
-            for (count, start) in row.iter().zip(starts.iter_mut()) {
-                *start = next;
-                next += count;
+            Ok(Interaction::Apart) => {}
+            Err(error) => {
+                let earlier = &sifts.places[..place];
+                let refused = first_refused(spheres, (chunk, shifts), saved, earlier, bound);
+                return Some(refused.unwrap_or((k, error)));
             }
         }
-        let stage = self.blocks.get_or_insert_with(|| BlockStage {
-            sorted: [0; SIFT],
-            forces: [ContactForces::default(); SIFT],
-            touches: [false; SIFT],
-            group: BlockGroup::default(),
-        });
-        let mut place = starts;
-        for &k in &self.sifts.places[..found] {
-            let (a, b) = key(usize::from(k));
-            stage.sorted[place[a][b]] = k;
-            place[a][b] += 1;
-        }
-        let mut pairs = ChunkPairs {
-            spheres,
-            chunk,
-            shifts,
-            states,
-            saved,
-            forces: &mut stage.forces,
-            touches: &mut stage.touches,
-            failed: None,
-        };
-        for (a, row) in counts.iter().enumerate() {
-            for (b, &count) in row.iter().enumerate() {
-                let places = &stage.sorted[starts[a][b]..starts[a][b] + count];
-                let places = places.iter().map(|&k| usize::from(k));
-                stage.group.evaluate(&mut bound[a][b], places, &mut pairs);
-            }
-        }
-        pairs.failed
+        states[k] = state;
     }
+    *tally = counted;
+    if probe.is_finite() && finite_states {
+        return None;
+    }
+    // A finite-valued probe that overflowed finds nothing: the chunk stands as evaluated.
+    first_refused(
+        spheres,
+        (chunk, shifts),
+        saved,
+        &sifts.places[..found],
+        bound,
+    )
 }
 
 /// The first of the sifted `places` that the one-contact path refuses, each evaluated checked
@@ -1132,50 +958,4 @@ fn first_refused<L: Law, const MATERIALS: usize>(
             .err()
             .map(|error| (k, error))
     })
-}
-
-/// One chunk's pairs as the batch path reads and writes them: the spheres from the arrays (j
-/// shifted to its image), the states from the chunk's copy, the forces and whether each touches
-/// kept by place, the first refused pair in list order.
-struct ChunkPairs<'a, F: Float, S, P> {
-    spheres: &'a P,
-    chunk: &'a [[u32; 2]],
-    shifts: &'a [Vec3<F>],
-    states: &'a mut [S],
-    saved: &'a [S],
-    forces: &'a mut [ContactForces<F>; SIFT],
-    touches: &'a mut [bool; SIFT],
-    failed: Option<(usize, ContactError)>,
-}
-
-impl<L: Law, P: Spheres<L::Float>> BlockPairs<L> for ChunkPairs<'_, L::Float, L::State, P> {
-    #[inline(always)]
-    fn gather(&self, k: usize) -> (Sphere<L::Float>, Sphere<L::Float>, L::State) {
-        let [i, j] = self.chunk[k].map(|x| x as usize);
-        let j_at = shifted(self.spheres.sphere(j), shift(self.shifts, k));
-        (self.spheres.sphere(i), j_at, self.saved[k])
-    }
-
-    #[inline(always)]
-    fn scatter(
-        &mut self,
-        k: usize,
-        outcome: Result<Interaction<L::Float>, ContactError>,
-        state: &L::State,
-    ) {
-        match outcome {
-            Ok(interaction) => {
-                self.states[k] = *state;
-                self.touches[k] = interaction.forces().is_some();
-                if let Interaction::Touching(forces) = interaction {
-                    self.forces[k] = forces;
-                }
-            }
-            Err(error) => {
-                if self.failed.is_none_or(|(first, _)| k < first) {
-                    self.failed = Some((k, error));
-                }
-            }
-        }
-    }
 }

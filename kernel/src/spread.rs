@@ -126,7 +126,7 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
     executor.for_each_mut(&mut pieces, |piece| {
         let Some(piece) = piece else { return };
         let mut bound = *bound;
-        piece.outcome = evaluate_pairs::<L, MATERIALS, false>(
+        piece.outcome = evaluate_pairs::<L, MATERIALS>(
             spheres,
             (piece.pairs, piece.shifts, piece.offset),
             (&mut *piece.states, &mut *piece.saved),

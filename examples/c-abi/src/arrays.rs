@@ -1,12 +1,8 @@
 //! Many pairs per call over a host's arrays (structure of arrays): the arrays, their
-//! reading and writing, and the pairs through the kernel's blocks or one at a time.
+//! reading and writing, and the pairs through the kernel one at a time.
 
 use crate::registry::AnyBound;
-use soft_sphere::batch::{BlockGroup, BlockPairs};
-use soft_sphere::{
-    BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, MathBackend, Route, Sphere,
-    Std, Vec3,
-};
+use soft_sphere::{BoundLaw, CheckedSphere, Float, Law, Sphere, Vec3};
 
 use crate::*;
 
@@ -307,11 +303,10 @@ impl<F: Float> States<'_, F> {
     }
 }
 
-/// The pairs in blocks through the kernel's batch path ([`BlockGroup`]; `Std` square roots: the
-/// same bits as the single calls'), each pair's state and result written back in order; one at
-/// a time where the kernel says blocks do not pay ([`Route::Auto`]).
+/// The pairs one at a time through the bound law, each sphere checked, each pair's state and
+/// result written back in order (a refused pair's state is left as it was).
 #[inline(always)]
-pub(crate) fn in_blocks<'a, L: Law>(
+pub(crate) fn one_at_a_time<'a, L: Law>(
     bound: &mut BoundLaw<L>,
     (i, j): (&SphereSlices<'a, L::Float>, &SphereSlices<'a, L::Float>),
     states: &mut States<'a, L::Float>,
@@ -319,59 +314,16 @@ pub(crate) fn in_blocks<'a, L: Law>(
 ) where
     L::State: Stored<L::Float>,
 {
-    let count = out.status.len();
-    if !Route::Auto.uses_blocks::<L>() {
-        // Blocks would not pay (the kernel's choice, Route::Auto): one pair at a time, the same
-        // bits.
-        for k in 0..count {
-            let mut state = states.load(k);
-            let result = CheckedSphere::new(sphere_at(i, k)).and_then(|a| {
-                let b = CheckedSphere::new(sphere_at(j, k))?;
-                bound.sphere_sphere(&a, &b, &mut state)
-            });
-            if result.is_ok() {
-                states.store(k, &state);
-            }
-            out.set(k, result);
+    for k in 0..out.status.len() {
+        let mut state = states.load(k);
+        let result = CheckedSphere::new(sphere_at(i, k)).and_then(|a| {
+            let b = CheckedSphere::new(sphere_at(j, k))?;
+            bound.sphere_sphere(&a, &b, &mut state)
+        });
+        if result.is_ok() {
+            states.store(k, &state);
         }
-        return;
-    }
-    let mut pairs = Pairs { i, j, states, out };
-    BlockGroup::default().evaluate(bound, 0..count, &mut pairs);
-}
-
-/// The call's arrays as the kernel's batch path reads and writes them.
-struct Pairs<'p, 'a, F> {
-    i: &'p SphereSlices<'a, F>,
-    j: &'p SphereSlices<'a, F>,
-    states: &'p mut States<'a, F>,
-    out: &'p mut Outputs<'a, F>,
-}
-
-impl<L: Law> BlockPairs<L> for Pairs<'_, '_, L::Float>
-where
-    L::State: Stored<L::Float>,
-{
-    #[inline(always)]
-    fn gather(&self, k: usize) -> (Sphere<L::Float>, Sphere<L::Float>, L::State) {
-        (
-            sphere_at(self.i, k),
-            sphere_at(self.j, k),
-            self.states.load(k),
-        )
-    }
-
-    #[inline(always)]
-    fn scatter(
-        &mut self,
-        k: usize,
-        outcome: Result<Interaction<L::Float>, ContactError>,
-        state: &L::State,
-    ) {
-        if outcome.is_ok() {
-            self.states.store(k, state);
-        }
-        self.out.set(k, outcome);
+        out.set(k, result);
     }
 }
 
@@ -392,10 +344,7 @@ pub(crate) unsafe fn bound_pairs<F: Float>(
     j: *const ss_sphere_arrays<F>,
     states: *const ss_state_arrays<F>,
     out: *const ss_forces_arrays<F>,
-) -> i32
-where
-    Std: MathBackend<F>,
-{
+) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let (Some(bound), Some(i), Some(j), Some(states), Some(out)) = (unsafe {
         (
@@ -448,8 +397,7 @@ where
         return SS_ERR_NULL;
     }
     each_law!(&bound.bound, AnyBound, b => {
-        let law = b.law().with_backend::<Std>();
-        in_blocks(&mut law.at(b.time_step()), (&i, &j), &mut states, &mut out)
+        one_at_a_time(&mut b.law().at(b.time_step()), (&i, &j), &mut states, &mut out)
     });
     SS_OK
 }

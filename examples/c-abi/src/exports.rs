@@ -127,8 +127,7 @@ macro_rules! entry_points {
         /// `count` sphere-sphere evaluations in one call, pair `k` being element `k` of the arrays
         /// of `*i`, `*j`, `*states` and `*out` (structure of arrays): per pair the same bits,
         /// state handling and code as `ss_bound_sphere_sphere_*`, in `out->status[k]`; a failed
-        /// pair's state and outputs are left as they were. The kernel evaluates the pairs in
-        /// vector-width blocks (build for your CPU to use its vectors: docs/performance.md, "Batches").
+        /// pair's state and outputs are left as they were.
         /// Returns `SS_ERR_NULL` when a pointer or array is null (the state arrays may be null
         /// for the stateless and frictionless laws), before touching anything; else `SS_OK`.
         ///

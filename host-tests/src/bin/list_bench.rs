@@ -17,11 +17,11 @@ use std::time::Instant;
 use host_tests::random::Xorshift;
 use soft_sphere::{
     Backup, CheckedPairs, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial,
-    LinearMixing, LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Route, Sphere,
-    SphereArrays, SpringDisplacement, Std, TimeStep, Vec3,
+    LinearMixing, LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays,
+    SpringDisplacement, Std, TimeStep, Vec3,
 };
 
-type Vectorised = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>, Std>;
+type StdAA = ContactLaw<f64, LinearSpringDashpot<f64>, ModelAA<f64>, Std>;
 
 struct Packing {
     position: Vec<Vec3<f64>>,
@@ -102,7 +102,7 @@ type Outcome = (Vec<Vec3<f64>>, Vec<Vec3<f64>>);
 
 /// One contact at a time, as an engine without the seam writes it.
 fn one_at_a_time(
-    table: &MaterialTable<Vectorised, 2>,
+    table: &MaterialTable<StdAA, 2>,
     time_step: TimeStep<f64>,
     spheres: &SphereArrays<'_, f64>,
     pairs: &[[u32; 2]],
@@ -138,7 +138,6 @@ fn one_at_a_time(
 }
 
 struct Seam {
-    route: Route,
     states: Vec<SpringDisplacement<f64>>,
     saved_states: Vec<SpringDisplacement<f64>>,
     saved_loads: Vec<Vec3<f64>>,
@@ -169,7 +168,7 @@ impl Seam {
             records: None,
         };
         table
-            .evaluate_by(self.route, time_step, spheres, list, out)
+            .evaluate(time_step, spheres, list, out)
             .map_or(0, |stats| stats.pair_contacts)
     }
 }
@@ -206,10 +205,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     // Std's square root: the same bits as libm's, and one LLVM can widen (libm's is an SSE
     // instruction in inline assembly, which in an AVX build pays for every switch of state).
     let std_mixing = LinearMixing::new(ModelAA).with_backend::<Std>();
-    let one_vector: MaterialTable<Vectorised, 2> =
-        MaterialTable::mixed(&std_mixing, &[glass, glass])?;
-    let binary_vector: MaterialTable<Vectorised, 2> =
-        MaterialTable::mixed(&std_mixing, &[glass, soft])?;
+    let one_vector: MaterialTable<StdAA, 2> = MaterialTable::mixed(&std_mixing, &[glass, glass])?;
+    let binary_vector: MaterialTable<StdAA, 2> = MaterialTable::mixed(&std_mixing, &[glass, soft])?;
     let n = packing.position.len();
     let alike = vec![0u32; n];
     let alternate: Vec<u32> = (0..n as u32).map(|k| k % 2).collect();
@@ -229,20 +226,18 @@ fn main() -> Result<(), Box<dyn Error>> {
         let time_step = vector.time_step(1.0e-6, &arrays, &[])?;
         let pairs = &packing.pairs;
         let fresh = || vec![SpringDisplacement::default(); pairs.len()];
-        let seam = |route| Seam {
-            route,
+        let seam = || Seam {
             states: fresh(),
             saved_states: fresh(),
             saved_loads: vec![Vec3::ZERO; 2 * n],
         };
-        let (mut single_states, mut scalar, mut blocks) =
-            (fresh(), seam(Route::OneAtATime), seam(Route::Blocks));
+        let (mut single_states, mut scalar) = (fresh(), seam());
         // Bits first: a few steps from the same states.
         let mut same = true;
         let mut touching = 0;
         let zeros = || (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
         for _ in 0..3 {
-            let (mut a, mut b, mut c): (Outcome, Outcome, Outcome) = (zeros(), zeros(), zeros());
+            let (mut a, mut b): (Outcome, Outcome) = (zeros(), zeros());
             touching = one_at_a_time(
                 vector,
                 time_step,
@@ -252,13 +247,11 @@ fn main() -> Result<(), Box<dyn Error>> {
                 (&mut a.0, &mut a.1),
             );
             let seen = scalar.step(vector, time_step, &arrays, pairs, (&mut b.0, &mut b.1));
-            let seen_blocks = blocks.step(vector, time_step, &arrays, pairs, (&mut c.0, &mut c.1));
-            same &= seen == touching && seen_blocks == touching;
-            same &= format!("{a:?}") == format!("{b:?}") && format!("{a:?}") == format!("{c:?}");
+            same &= seen == touching;
+            same &= format!("{a:?}") == format!("{b:?}");
             same &= format!("{single_states:?}") == format!("{:?}", scalar.states);
-            same &= format!("{single_states:?}") == format!("{:?}", blocks.states);
         }
-        let mut times = [Vec::new(), Vec::new(), Vec::new()];
+        let mut times = [Vec::new(), Vec::new()];
         let (mut force, mut torque) = zeros();
         let repeat = 20;
         let per_pair =
@@ -287,25 +280,13 @@ fn main() -> Result<(), Box<dyn Error>> {
                 ));
             }
             times[1].push(per_pair(start));
-            let start = Instant::now();
-            for _ in 0..repeat {
-                black_box(blocks.step(
-                    vector,
-                    time_step,
-                    &arrays,
-                    pairs,
-                    (&mut force, &mut torque),
-                ));
-            }
-            times[2].push(per_pair(start));
         }
         let per_contact = pairs.len() as f64 / touching.max(1) as f64;
-        let [single, seam_one, seam_blocks] = times.map(median);
+        let [single, seam_one] = times.map(median);
         let yes = if same { "yes" } else { "no" };
         for (route, ns) in [
             ("caller's loop, one at a time", single),
             ("list seam, one at a time", seam_one),
-            ("list seam, blocks", seam_blocks),
         ] {
             println!(
                 "| {route} | {name} | {ns:.1} | {:.1} | {yes} |",
@@ -336,7 +317,7 @@ fn main() -> Result<(), Box<dyn Error>> {
 /// that nothing touches (checks, backup, sift, resets), and the whole call; the differences are
 /// the phases.
 fn phases(
-    table: &MaterialTable<Vectorised, 2>,
+    table: &MaterialTable<StdAA, 2>,
     packing: &Packing,
     material: &[u32],
     (time_step, repeat, rounds): (TimeStep<f64>, usize, usize),
@@ -351,7 +332,6 @@ fn phases(
     };
     let pairs = &packing.pairs;
     let mut seam = Seam {
-        route: Route::OneAtATime,
         states: vec![SpringDisplacement::default(); pairs.len()],
         saved_states: vec![SpringDisplacement::default(); pairs.len()],
         saved_loads: vec![Vec3::ZERO; 2 * n],

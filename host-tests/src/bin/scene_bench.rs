@@ -162,8 +162,6 @@ struct Measured {
     sliding_fraction: f64,
     /// Sphere-sphere contact-steps of the last run (touching pairs summed over its steps).
     pair_contact_steps: usize,
-    /// Whether the scene evaluated its pairs in the kernel's batches ([`Law::VECTORISES`]).
-    batches: bool,
 }
 
 fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
@@ -225,7 +223,6 @@ fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
         mean_overlap: last.2,
         sliding_fraction,
         pair_contact_steps,
-        batches: L::VECTORISES,
     })
 }
 
@@ -391,15 +388,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let n = spheres.len() as f64;
     let median = m.seconds[m.seconds.len() / 2];
     let particle_steps = n * o.steps as f64;
-    println!(
-        "build: {}; pairs in batches: {}",
-        host_tests::build::describe(),
-        if m.batches {
-            "yes"
-        } else {
-            "no (one contact at a time)"
-        }
-    );
+    println!("build: {}", host_tests::build::describe());
     println!(
         "soft-sphere {} spheres, {} steps, variant {}, {:?}, {}: loop time min {:.3} s median {:.3} s max {:.3} s",
         spheres.len(),

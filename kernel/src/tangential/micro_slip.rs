@@ -374,8 +374,6 @@ fn crossings<F: Float, M: MathBackend<F>>(a: &Breakpoint<F>, b: &Breakpoint<F>) 
 impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS> {
     type State = MicroSlipSprings<F, SPRINGS>;
     const NEEDS_CONTACT_RADIUS: bool = true;
-    // The breakpoints are found one after another: the lanes of a block run one at a time.
-    const VECTORISES: bool = false;
 
     fn force<M: MathBackend<F>>(
         &self,

@@ -238,7 +238,6 @@ pub struct MindlinStateless<F>(pub MindlinParameters<F>);
 impl<F: Float> TangentialModel<F> for MindlinStateless<F> {
     type State = ();
     const NEEDS_CONTACT_RADIUS: bool = true;
-    const VECTORISES: bool = false;
 
     #[inline(always)]
     fn force<M: MathBackend<F>>(

@@ -112,12 +112,6 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     /// and the torques at compile time.
     const ACTIVE: bool = true;
 
-    /// Whether the batch path ([`crate::batch`]) computes this law on every lane of a block
-    /// without branching, which lets the lanes share vector registers. False for a law whose
-    /// per-contact math includes a call the compiler cannot widen (the stateless law's `atan2`):
-    /// its block then runs lane by lane through the one-contact path, with the same bits.
-    const VECTORISES: bool = true;
-
     /// Tangential force for this step, and the state to keep.
     fn force<M: MathBackend<F>>(
         &self,

@@ -69,7 +69,6 @@ pub(crate) fn stateless_critical_step<F: Float>(
 
 impl<F: Float> TangentialModel<F> for Stateless<F> {
     type State = ();
-    const VECTORISES: bool = false;
 
     #[inline(always)]
     fn force<M: MathBackend<F>>(

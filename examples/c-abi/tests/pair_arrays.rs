@@ -81,7 +81,7 @@ macro_rules! batch_matches_single_calls {
         #[test]
         fn $name() {
             type R = $real;
-            let count = 103; // not a multiple of any block length
+            let count = 103;
             for model in [
                 SS_MODEL_STATELESS,
                 SS_MODEL_AA,
