@@ -161,6 +161,13 @@ impl<F: Float> Breakpoint<F> {
         }
     }
 
+    /// The displacement a fraction `w` of the way from this breakpoint to `next` in
+    /// `lambda = 1 - t^2`, along which the profile is linear.
+    #[inline(always)]
+    fn displacement_towards(&self, next: &Self, w: F) -> Vec3<F> {
+        self.displacement + (next.displacement - self.displacement) * w
+    }
+
     /// The trial held to its limit: a slipping spring keeps `l` along its trial.
     #[inline(always)]
     fn clipped<M: MathBackend<F>>(self) -> Self {
@@ -441,7 +448,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
                 } else {
                     F::ZERO
                 };
-                let rim = previous.displacement + (next.displacement - previous.displacement) * w;
+                let rim = previous.displacement_towards(&next, w);
                 next = Breakpoint::trial(F::ONE, rim, full_slip);
             }
             let crossed = crossings::<F, M>(&previous, &next);
@@ -453,8 +460,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
                 let squared = a * a + w * (b - a) * (b + a);
                 let position = M::sqrt(squared);
                 if position > a && position < b {
-                    let displacement =
-                        previous.displacement + (next.displacement - previous.displacement) * w;
+                    let displacement = previous.displacement_towards(&next, w);
                     let limit = previous.limit + (next.limit - previous.limit) * w;
                     let crossing = Breakpoint {
                         position,
