@@ -257,3 +257,72 @@ fn bad_shifts_and_material_arrays_are_refused_with_their_place() {
     );
     assert_eq!((slice.len(), slice.is_empty()), (40, false));
 }
+
+/// A pair seen through a periodic image whose result overflows is refused with its own place:
+/// the seam tests a chunk's results once and then evaluates its pairs again, checked, each at
+/// its image, to name the first refused in list order, which is the one the one-contact path
+/// refuses first on the moved spheres.
+#[test]
+fn an_overflowing_pair_across_the_period_is_named() {
+    let table = table();
+    let gas = Gas::new(120, 5);
+    let checked = gas.checked();
+    let slice = SphereSlice {
+        spheres: &checked,
+        material: &gas.materials,
+    };
+    let dt = table.time_step(1e-6, &slice, &[]).unwrap();
+    let states = preloaded(gas.pairs.len());
+    // The one-contact path on the images: the first pair in list order it refuses.
+    let first_refused = |gas: &Gas| {
+        gas.pairs.iter().enumerate().find_map(|(k, &[i, j])| {
+            let (i, j) = (i as usize, j as usize);
+            let law = table
+                .law(gas.materials[i] as usize, gas.materials[j] as usize)
+                .unwrap();
+            let mut image = gas.spheres[j];
+            image.position += gas.shifts[k];
+            let mut state = states[k];
+            law.sphere_sphere(&gas.spheres[i], &image, &mut state, dt)
+                .err()
+                .map(|error| ListError::Pair { pair: k, error })
+        })
+    };
+    assert_eq!(first_refused(&gas), None);
+    // Each touching pair across the period in turn, its spheres driven apart at speeds whose
+    // difference overflows, until the first pair refused is one across the period.
+    let mut tried = 0;
+    for (k, &[i, j]) in gas.pairs.iter().enumerate() {
+        if gas.shifts[k] == Vec3::ZERO {
+            continue;
+        }
+        let mut driven = Gas {
+            spheres: gas.spheres.clone(),
+            materials: gas.materials.clone(),
+            pairs: gas.pairs.clone(),
+            shifts: gas.shifts.clone(),
+        };
+        driven.spheres[i as usize].velocity = Vec3::new(-1.5e308, 0.0, 0.0);
+        driven.spheres[j as usize].velocity = Vec3::new(1.5e308, 0.0, 0.0);
+        let expected = first_refused(&driven);
+        let Some(ListError::Pair { pair, .. }) = expected else {
+            continue;
+        };
+        if driven.shifts[pair] == Vec3::ZERO {
+            continue;
+        }
+        tried += 1;
+        let list = (&driven.pairs[..], &driven.shifts[..], &states[..]);
+        let checked = driven.checked();
+        let slice = SphereSlice {
+            spheres: &checked,
+            material: &driven.materials,
+        };
+        assert_eq!(
+            evaluate(&table, dt, &slice, list).err(),
+            expected,
+            "pair {k}"
+        );
+    }
+    assert!(tried > 3, "{tried} pairs across the period refused");
+}
