@@ -1,7 +1,7 @@
 //! Many pairs per call over a host's arrays (structure of arrays): the arrays, their
 //! reading and writing, and the pairs through the kernel one at a time.
 
-use crate::registry::AnyBound;
+use crate::registry::{AnyBound, Real};
 use soft_sphere::{BoundLaw, CheckedSphere, Float, Law, Sphere, Vec3};
 
 use crate::*;
@@ -162,7 +162,7 @@ pub(crate) struct Outputs<'a, F> {
     reals: [&'a mut [F]; 11],
 }
 
-impl<'a, F: Float> Outputs<'a, F> {
+impl<'a, F: Real> Outputs<'a, F> {
     /// The arrays of `*out`, or `None` if one is null.
     ///
     /// # Safety
@@ -312,6 +312,7 @@ pub(crate) fn one_at_a_time<'a, L: Law>(
     states: &mut States<'a, L::Float>,
     out: &mut Outputs<'a, L::Float>,
 ) where
+    L::Float: Real,
     L::State: Stored<L::Float>,
 {
     for k in 0..out.status.len() {
@@ -337,7 +338,7 @@ where
 
 /// # Safety
 /// As the exported batch calls.
-pub(crate) unsafe fn bound_pairs<F: Float>(
+pub(crate) unsafe fn bound_pairs<F: Real>(
     bound: *mut ss_bound_law<F>,
     count: usize,
     i: *const ss_sphere_arrays<F>,

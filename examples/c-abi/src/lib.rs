@@ -57,24 +57,24 @@ pub use table::{
 use registry::{AnyBound, AnyLaw, Family, family};
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    CheckedSphere, ContactError, ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction,
+    CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, Interaction,
     LinearSpringDashpot, Material, Sphere, TimeStep, Vec3, Wall,
 };
 use state::*;
 
 /// A validated contact law and its checked time step (opaque to C).
 #[derive(Debug)]
-pub struct ss_law<F: Float> {
+pub struct ss_law<F: Real> {
     law: AnyLaw<F>,
     time_step: TimeStep<F>,
 }
 
-fn build_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
+fn build_law<F: Real>(p: &ss_params<F>) -> Result<ss_law<F>, i32> {
     checked_law(p).map_err(|(code, _)| code)
 }
 
 /// The law `*p` describes, or the error code and the `SS_PARAMETER_*` it is about.
-fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
+fn checked_law<F: Real>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
     let Some(law) = AnyLaw::new(p) else {
         return Err((SS_ERR_UNKNOWN_MODEL, SS_PARAMETER_MODEL));
     };
@@ -86,7 +86,7 @@ fn checked_law<F: Float>(p: &ss_params<F>) -> Result<ss_law<F>, (i32, i32)> {
 
 /// The stability limit of the law `*params` describes, for its smallest effective mass: what a
 /// host reports when `SS_ERR_UNSTABLE_TIME_STEP` refuses its step.
-fn limit_of<F: Float>(p: &ss_params<F>) -> Result<F, i32> {
+fn limit_of<F: Real>(p: &ss_params<F>) -> Result<F, i32> {
     let probe = ss_params {
         time_step: F::MIN_POSITIVE,
         ..*p
@@ -98,7 +98,7 @@ fn limit_of<F: Float>(p: &ss_params<F>) -> Result<F, i32> {
 
 /// # Safety
 /// As the exported constructors.
-unsafe fn law_new<F: Float>(params: *const ss_params<F>, out: *mut *mut ss_law<F>) -> i32 {
+unsafe fn law_new<F: Real>(params: *const ss_params<F>, out: *mut *mut ss_law<F>) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let (Some(p), false) = (unsafe { params.as_ref() }, out.is_null()) else {
         return SS_ERR_NULL;
@@ -115,7 +115,7 @@ unsafe fn law_new<F: Float>(params: *const ss_params<F>, out: *mut *mut ss_law<F
 
 /// # Safety
 /// As the exported destructors.
-unsafe fn law_free<F: Float>(law: *mut ss_law<F>) {
+unsafe fn law_free<F: Real>(law: *mut ss_law<F>) {
     if !law.is_null() {
         // SAFETY: the handle came from Box::into_raw in law_new.
         drop(unsafe { Box::from_raw(law) });
@@ -135,7 +135,7 @@ macro_rules! evaluated {
 }
 
 #[inline(always)]
-fn finish<F: Float, S: Stored<F>>(
+fn finish<F: Real, S: Stored<F>>(
     result: Result<Interaction<F>, ContactError>,
     stored: &S,
     state: &mut ss_state<F>,
@@ -152,7 +152,7 @@ fn finish<F: Float, S: Stored<F>>(
 }
 
 #[inline(always)]
-fn forces_of<F: Float>(interaction: Interaction<F>) -> ss_forces<F> {
+fn forces_of<F: Real>(interaction: Interaction<F>) -> ss_forces<F> {
     match interaction {
         Interaction::Apart => ss_forces {
             touching: 0,
@@ -178,7 +178,7 @@ fn forces_of<F: Float>(interaction: Interaction<F>) -> ss_forces<F> {
 /// The kernel treats the sphere as body i against a wall: the C ABI reports its force as the one
 /// on j, so that `force_on_j` and `torque_on_j` are always what the sphere receives.
 #[inline(always)]
-fn sphere_as_j<F: Float>(interaction: Interaction<F>) -> Interaction<F> {
+fn sphere_as_j<F: Real>(interaction: Interaction<F>) -> Interaction<F> {
     match interaction {
         Interaction::Touching(mut c) => {
             c.normal = -c.normal;
@@ -193,7 +193,7 @@ fn sphere_as_j<F: Float>(interaction: Interaction<F>) -> Interaction<F> {
 /// The kernel's wall for `*wall`, checked: a plane for a zero radius (of either sign), a
 /// cylinder for a positive one; any other radius is refused.
 #[inline(always)]
-fn wall_of<F: Float>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
+fn wall_of<F: Real>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
     let (point, direction) = (wall.point.into(), wall.direction.into());
     if wall.radius == F::ZERO {
         Wall::new(point, direction)
@@ -207,7 +207,7 @@ fn wall_of<F: Float>(wall: &ss_wall<F>) -> Result<Wall<F>, i32> {
 
 /// # Safety
 /// As the exported sphere-sphere calls.
-unsafe fn pair<F: Float>(
+unsafe fn pair<F: Real>(
     law: *const ss_law<F>,
     i: *const ss_sphere<F>,
     j: *const ss_sphere<F>,
@@ -233,7 +233,7 @@ unsafe fn pair<F: Float>(
 
 /// # Safety
 /// As the exported sphere-wall calls.
-unsafe fn on_wall<F: Float>(
+unsafe fn on_wall<F: Real>(
     law: *const ss_law<F>,
     sphere: *const ss_sphere<F>,
     wall: *const ss_wall<F>,
@@ -268,7 +268,7 @@ unsafe fn on_wall<F: Float>(
 /// calls it over a neighbour list derives each once; the results are the same bits as the
 /// `ss_law` entry points'.
 #[derive(Debug)]
-pub struct ss_bound_law<F: Float> {
+pub struct ss_bound_law<F: Real> {
     bound: AnyBound<F>,
     /// The last wall that passed its checks, as given and as checked.
     wall: Option<(ss_wall<F>, Wall<F>)>,
@@ -276,7 +276,7 @@ pub struct ss_bound_law<F: Float> {
 
 /// The same bits, so that a memo keyed on them gives what a fresh check would (-0.0 and 0.0
 /// differ; a NaN never passes the check, so it is never a key).
-fn same_wall<F: Float>(a: &ss_wall<F>, b: &ss_wall<F>) -> bool {
+fn same_wall<F: Real>(a: &ss_wall<F>, b: &ss_wall<F>) -> bool {
     let bits = |w: &ss_wall<F>| {
         let vectors = [w.point, w.direction, w.velocity].map(|v| [v.x, v.y, v.z]);
         let [p, d, v] = vectors.map(|v| v.map(|x| x.to_f64().to_bits()));
@@ -287,7 +287,7 @@ fn same_wall<F: Float>(a: &ss_wall<F>, b: &ss_wall<F>) -> bool {
 
 /// # Safety
 /// As the exported bound-law constructors.
-unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law<F>) -> i32 {
+unsafe fn bound_new<F: Real>(law: *const ss_law<F>, out: *mut *mut ss_bound_law<F>) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let (Some(law), false) = (unsafe { law.as_ref() }, out.is_null()) else {
         return SS_ERR_NULL;
@@ -301,7 +301,7 @@ unsafe fn bound_new<F: Float>(law: *const ss_law<F>, out: *mut *mut ss_bound_law
 
 /// # Safety
 /// As the exported bound-law destructors.
-unsafe fn bound_free<F: Float>(bound: *mut ss_bound_law<F>) {
+unsafe fn bound_free<F: Real>(bound: *mut ss_bound_law<F>) {
     if bound.is_null() {
         return;
     }
@@ -311,7 +311,7 @@ unsafe fn bound_free<F: Float>(bound: *mut ss_bound_law<F>) {
 
 /// # Safety
 /// As the exported bound sphere-sphere calls.
-unsafe fn bound_pair<F: Float>(
+unsafe fn bound_pair<F: Real>(
     bound: *mut ss_bound_law<F>,
     i: *const ss_sphere<F>,
     j: *const ss_sphere<F>,
@@ -345,7 +345,7 @@ unsafe fn bound_pair<F: Float>(
 
 /// # Safety
 /// As the exported bound sphere-wall calls.
-unsafe fn bound_wall<F: Float>(
+unsafe fn bound_wall<F: Real>(
     bound: *mut ss_bound_law<F>,
     sphere: *const ss_sphere<F>,
     wall: *const ss_wall<F>,
@@ -385,7 +385,7 @@ unsafe fn bound_wall<F: Float>(
 
 /// # Safety
 /// As the exported advance calls.
-unsafe fn advance<F: Float>(
+unsafe fn advance<F: Real>(
     law: *const ss_law<F>,
     sphere: *mut ss_sphere<F>,
     force: ss_vec3<F>,
@@ -405,7 +405,7 @@ unsafe fn advance<F: Float>(
 
 /// # Safety
 /// As the exported duration calls.
-unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F) -> i32 {
+unsafe fn duration<F: Real>(params: *const ss_params<F>, m_star: F, out: *mut F) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let (Some(p), Some(out)) = (unsafe { (params.as_ref(), out.as_mut()) }) else {
         return SS_ERR_NULL;
@@ -437,7 +437,7 @@ unsafe fn duration<F: Float>(params: *const ss_params<F>, m_star: F, out: *mut F
 
 /// # Safety
 /// As the exported stability-limit calls.
-unsafe fn stability_limit<F: Float>(params: *const ss_params<F>, out: *mut F) -> i32 {
+unsafe fn stability_limit<F: Real>(params: *const ss_params<F>, out: *mut F) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let (Some(p), Some(out)) = (unsafe { (params.as_ref(), out.as_mut()) }) else {
         return SS_ERR_NULL;
@@ -453,7 +453,7 @@ unsafe fn stability_limit<F: Float>(params: *const ss_params<F>, out: *mut F) ->
 
 /// # Safety
 /// As the exported moduli calls.
-unsafe fn moduli<F: Float>(
+unsafe fn moduli<F: Real>(
     i: *const ss_material<F>,
     j: *const ss_material<F>,
     effective_modulus: *mut F,
@@ -519,7 +519,7 @@ pub unsafe extern "C" fn ss_effective_moduli_f32(
 
 /// # Safety
 /// As the exported rejected-parameter calls.
-unsafe fn rejected<F: Float>(params: *const ss_params<F>) -> i32 {
+unsafe fn rejected<F: Real>(params: *const ss_params<F>) -> i32 {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let Some(p) = (unsafe { params.as_ref() }) else {
         return SS_PARAMETER_NONE;

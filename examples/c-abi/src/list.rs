@@ -3,8 +3,8 @@
 //! evaluated and scattered back, all or nothing.
 
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactList, Float, Interaction, Law, ListError,
-    ListOutput, ListStats, Mixing, Sphere, SphereArrays, Vec3, check_pairs,
+    Backup, CheckedPairs, CheckedSphere, ContactList, Interaction, Law, ListError, ListOutput,
+    ListStats, Mixing, Sphere, SphereArrays, Vec3, check_pairs,
 };
 
 use crate::{
@@ -12,6 +12,7 @@ use crate::{
     forces_of, ss_forces, ss_sphere,
 };
 
+use crate::registry::Real;
 use crate::table::*;
 
 /// A null pointer is refused only when there is something to read through it.
@@ -109,7 +110,7 @@ unsafe fn check_pages<F>(
     SS_OK
 }
 
-impl<F: Float, X: Mixing<F>> Tabled<F, X>
+impl<F: Real, X: Mixing<F>> Tabled<F, X>
 where
     <X::Law as Law>::State: Flat<F>,
 {
@@ -638,7 +639,7 @@ pub(crate) unsafe fn check_neighbours(
 ///
 /// # Safety
 /// `loads.force` and `loads.torque` hold three numbers for each of `count` atoms.
-unsafe fn first_unfinite_load<F: Float>(loads: &ss_loads<F>, count: usize) -> Option<usize> {
+unsafe fn first_unfinite_load<F: Real>(loads: &ss_loads<F>, count: usize) -> Option<usize> {
     (0..count).find(|&k| {
         (3 * k..3 * k + 3).any(|at| {
             // SAFETY: the caller's promise.

@@ -10,8 +10,9 @@
 
 use soft_sphere::{
     BoundLaw, ContactLaw, Float, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
-    LinearSpringDashpot, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelAA,
-    ModelAALuding, ParameterError, Stateless, TangentialParameters, TimeStep,
+    LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters,
+    MindlinStateless, ModelAA, ModelAALuding, ParameterError, Stateless, Std, TangentialParameters,
+    TimeStep,
 };
 
 use crate::ss_params;
@@ -60,39 +61,69 @@ macro_rules! with_laws {
     };
 }
 
+/// The precisions the C ABI offers, each with the math backend its laws take: `Std`, whose
+/// square root gives libm's bits and is one the compiler widens and keeps in vector registers
+/// (in an AVX build libm's, an SSE instruction in inline assembly, costs a switch of register
+/// state at every root).
+pub trait Real: Float {
+    /// The laws' math backend.
+    type Backend: MathBackend<Self>;
+}
+
+impl Real for f32 {
+    type Backend = Std;
+}
+
+impl Real for f64 {
+    type Backend = Std;
+}
+
 /// Each family's law and mixing rule for a tangential slot `T`, named by the family.
 mod family {
     /// The linear spring-dashpot.
     pub(crate) mod linear {
         /// The law.
-        pub(crate) type Law<F, T> =
-            soft_sphere::ContactLaw<F, soft_sphere::LinearSpringDashpot<F>, T>;
+        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<
+            F,
+            soft_sphere::LinearSpringDashpot<F>,
+            T,
+            <F as super::super::Real>::Backend,
+        >;
         /// The mixing rule.
-        pub(crate) type Mixing<F, T> = soft_sphere::LinearMixing<F, T>;
+        pub(crate) type Mixing<F, T> =
+            soft_sphere::LinearMixing<F, T, <F as super::super::Real>::Backend>;
     }
     /// Hertz.
     pub(crate) mod hertz {
         /// The law.
-        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<F, soft_sphere::Hertz<F>, T>;
+        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<
+            F,
+            soft_sphere::Hertz<F>,
+            T,
+            <F as super::super::Real>::Backend,
+        >;
         /// The mixing rule.
-        pub(crate) type Mixing<F, T> = soft_sphere::HertzMixing<F, T>;
+        pub(crate) type Mixing<F, T> =
+            soft_sphere::HertzMixing<F, T, <F as super::super::Real>::Backend>;
     }
 }
 
 /// The law of a family and tangential constructor, from `ss_params`.
 macro_rules! law_of {
     ($p:expr, linear, frictionless) => {
-        linear_normal($p).map(|normal| ContactLaw::new(normal, Frictionless))
+        linear_normal($p).map(|normal| ContactLaw::new(normal, Frictionless).with_backend())
     };
     ($p:expr, linear, $make:ident) => {
-        linear_normal($p)
-            .and_then(|normal| Ok(ContactLaw::new(normal, $make(linear_tangential($p)?))))
+        linear_normal($p).and_then(|normal| {
+            Ok(ContactLaw::new(normal, $make(linear_tangential($p)?)).with_backend())
+        })
     };
     ($p:expr, hertz, frictionless) => {
-        hertz_normal($p).map(|normal| ContactLaw::new(normal, Frictionless))
+        hertz_normal($p).map(|normal| ContactLaw::new(normal, Frictionless).with_backend())
     };
     ($p:expr, hertz, $make:ident) => {
-        hertz_normal($p).and_then(|normal| Ok(ContactLaw::new(normal, $make(mindlin($p)?))))
+        hertz_normal($p)
+            .and_then(|normal| Ok(ContactLaw::new(normal, $make(mindlin($p)?)).with_backend()))
     };
 }
 
@@ -102,16 +133,16 @@ macro_rules! mixing_of {
         MicroSlipMixing { largest: $impact }
     };
     ($impact:expr, linear, frictionless) => {
-        LinearMixing::new(|_| Frictionless)
+        LinearMixing::new(|_| Frictionless).with_backend()
     };
     ($impact:expr, linear, $make:ident) => {
-        LinearMixing::new($make)
+        LinearMixing::new($make).with_backend()
     };
     ($impact:expr, hertz, frictionless) => {
-        HertzMixing::new($impact, |_| Frictionless)
+        HertzMixing::new($impact, |_| Frictionless).with_backend()
     };
     ($impact:expr, hertz, $make:ident) => {
-        HertzMixing::new($impact, $make)
+        HertzMixing::new($impact, $make).with_backend()
     };
 }
 
@@ -181,7 +212,7 @@ macro_rules! registry {
 
         /// Which law a handle holds.
         #[derive(Clone, Copy, Debug)]
-        pub(crate) enum AnyLaw<F: Float> {
+        pub(crate) enum AnyLaw<F: Real> {
             $(
                 #[doc = $name]
                 $variant(family::$family::Law<F, $t>),
@@ -190,7 +221,7 @@ macro_rules! registry {
 
         /// Which law a bound handle holds: a copy of the law, bound to its time step.
         #[derive(Debug)]
-        pub(crate) enum AnyBound<F: Float> {
+        pub(crate) enum AnyBound<F: Real> {
             $(
                 #[doc = $name]
                 $variant(BoundLaw<family::$family::Law<F, $t>>),
@@ -199,7 +230,7 @@ macro_rules! registry {
 
         /// A material table of each law.
         #[derive(Debug)]
-        pub(crate) enum PlainTable<F: Float> {
+        pub(crate) enum PlainTable<F: Real> {
             $(
                 #[doc = $name]
                 $variant(Box<Tabled<F, family::$family::Mixing<F, $t>>>),
@@ -212,7 +243,7 @@ macro_rules! registry {
 
         /// A material table of each law with the elastic-plastic rolling resistance.
         #[derive(Debug)]
-        pub(crate) enum RolledTable<F: Float> {
+        pub(crate) enum RolledTable<F: Real> {
             $(
                 #[doc = $name]
                 $variant(Box<Tabled<F, Rolled<family::$family::Mixing<F, $t>, F>>>),
@@ -243,7 +274,7 @@ macro_rules! registry {
             };
         }
 
-        impl<F: Float> AnyLaw<F> {
+        impl<F: Real> AnyLaw<F> {
             /// The law `p` describes, before its time step is checked; `None` for a code the
             /// list does not hold for handles.
             pub(crate) fn new(p: &ss_params<F>) -> Option<Result<Self, ParameterError>> {
@@ -266,7 +297,7 @@ macro_rules! registry {
             }
         }
 
-        impl<F: Float> PlainTable<F> {
+        impl<F: Real> PlainTable<F> {
             /// A table of `materials` materials of the law `model` names; `None` for a code the
             /// list does not hold.
             pub(crate) fn new(model: i32, impact: HertzImpact<F>, materials: usize) -> Option<Self> {
@@ -286,7 +317,7 @@ macro_rules! registry {
             }
         }
 
-        impl<F: Float> RolledTable<F> {
+        impl<F: Real> RolledTable<F> {
             /// As [`PlainTable::new`], with the rolling resistance checked for
             /// `smallest_inertia`; `None` also for a frictionless law (nothing to roll
             /// against).
@@ -343,19 +374,17 @@ pub(crate) fn hertz_model(model: i32) -> bool {
 }
 
 /// The linear normal law of `p`.
-fn linear_normal<F: Float>(p: &ss_params<F>) -> Result<LinearSpringDashpot<F>, ParameterError> {
+fn linear_normal<F: Real>(p: &ss_params<F>) -> Result<LinearSpringDashpot<F>, ParameterError> {
     LinearSpringDashpot::new(p.normal_stiffness, p.restitution)
 }
 
 /// The linear tangential parameters of `p`.
-fn linear_tangential<F: Float>(
-    p: &ss_params<F>,
-) -> Result<TangentialParameters<F>, ParameterError> {
+fn linear_tangential<F: Real>(p: &ss_params<F>) -> Result<TangentialParameters<F>, ParameterError> {
     TangentialParameters::new(p.tangential_stiffness, p.dashpot_ratio, p.friction)
 }
 
 /// Hertz's normal law of `p`, checked for its declared impact.
-fn hertz_normal<F: Float>(p: &ss_params<F>) -> Result<Hertz<F>, ParameterError> {
+fn hertz_normal<F: Real>(p: &ss_params<F>) -> Result<Hertz<F>, ParameterError> {
     let largest = HertzImpact {
         speed: p.largest_impact_speed,
         effective_radius: p.largest_effective_radius,
@@ -364,6 +393,6 @@ fn hertz_normal<F: Float>(p: &ss_params<F>) -> Result<Hertz<F>, ParameterError> 
 }
 
 /// Mindlin's tangential parameters of `p`.
-fn mindlin<F: Float>(p: &ss_params<F>) -> Result<MindlinParameters<F>, ParameterError> {
+fn mindlin<F: Real>(p: &ss_params<F>) -> Result<MindlinParameters<F>, ParameterError> {
     MindlinParameters::new(p.effective_shear_modulus, p.dashpot_ratio, p.friction)
 }

@@ -8,13 +8,13 @@
 //! caller gave as it was.
 
 use soft_sphere::{
-    ContactLaw, ElasticMaterial, ElasticPlasticRolling, Float, HertzImpact, HertzMicroSlip,
-    HertzMixing, Interaction, Law, LinearMaterial, ListError, Material, MaterialTable,
-    MaterialWall, MathBackend, MicroSlip, MindlinAA, Mixing, NormalModel, ParameterError, Rotation,
-    SphereArrays, TangentialModel, TimeStep, Vec3, Wall,
+    ContactLaw, ElasticMaterial, ElasticPlasticRolling, HertzImpact, HertzMicroSlip, HertzMixing,
+    Interaction, Law, LinearMaterial, ListError, Material, MaterialTable, MaterialWall,
+    MathBackend, MicroSlip, MindlinAA, Mixing, NormalModel, ParameterError, Rotation, SphereArrays,
+    TangentialModel, TimeStep, Vec3, Wall,
 };
 
-use crate::registry::{PlainTable, RolledTable, hertz_model};
+use crate::registry::{PlainTable, Real, RolledTable, hertz_model};
 use crate::{
     Flat, SS_ERR_NULL, SS_ERR_UNKNOWN_MODEL, SS_MICROSLIP_SPRINGS, SS_OK, SS_PARAMETER_NONE,
     parameter_code, rejected_parameter, ss_forces, ss_sphere, ss_wall,
@@ -224,13 +224,13 @@ pub struct ss_list_report {
 /// A table: its coefficients as given, the laws and the step once prepared, and the working
 /// memory of evaluations (opaque to C).
 #[derive(Debug)]
-pub struct ss_table<F: Float> {
+pub struct ss_table<F: Real> {
     table: AnyTable<F>,
 }
 
 /// One family's table.
 #[derive(Debug)]
-pub(crate) struct Tabled<F: Float, X: Mixing<F>> {
+pub(crate) struct Tabled<F: Real, X: Mixing<F>> {
     pub(crate) mixing: X,
     pub(crate) properties: fn(&ss_coefficients<F>) -> Result<X::Properties, ParameterError>,
     pub(crate) materials: usize,
@@ -326,7 +326,7 @@ pub(crate) struct Rolled<X, F> {
 
 impl<F, X, N, T, M, R> Mixing<F> for Rolled<X, F>
 where
-    F: Float,
+    F: Real,
     X: Mixing<F, Law = ContactLaw<F, N, T, M, R>>,
     N: NormalModel<F>,
     T: TangentialModel<F>,
@@ -351,11 +351,11 @@ where
     }
 }
 
-pub(crate) fn rolling_of<F: Float>(c: &ss_coefficients<F>) -> [F; 3] {
+pub(crate) fn rolling_of<F: Real>(c: &ss_coefficients<F>) -> [F; 3] {
     [c.rolling_friction, c.rolling_stiffness, c.rolling_damping]
 }
 
-pub(crate) fn rolled_linear<F: Float>(
+pub(crate) fn rolled_linear<F: Real>(
     c: &ss_coefficients<F>,
 ) -> Result<Rolling<LinearMaterial<F>, F>, ParameterError> {
     Ok(Rolling {
@@ -364,7 +364,7 @@ pub(crate) fn rolled_linear<F: Float>(
     })
 }
 
-pub(crate) fn rolled_elastic<F: Float>(
+pub(crate) fn rolled_elastic<F: Real>(
     c: &ss_coefficients<F>,
 ) -> Result<Rolling<ElasticMaterial<F>, F>, ParameterError> {
     Ok(Rolling {
@@ -376,12 +376,12 @@ pub(crate) fn rolled_elastic<F: Float>(
 /// The Hertz-Mindlin mixing rule with micro-slip: [`HertzMixing`]'s Hertz law and Mindlin
 /// parameters, the profile in `SS_MICROSLIP_SPRINGS` breakpoints.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct MicroSlipMixing<F: Float> {
+pub(crate) struct MicroSlipMixing<F: Real> {
     /// The declared impact of the Hertz law.
     pub(crate) largest: HertzImpact<F>,
 }
 
-impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
+impl<F: Real> Mixing<F> for MicroSlipMixing<F> {
     type Properties = ElasticMaterial<F>;
     type Law = HertzMicroSlip<F, SS_MICROSLIP_SPRINGS>;
 
@@ -394,7 +394,7 @@ impl<F: Float> Mixing<F> for MicroSlipMixing<F> {
 
 /// A table of the registry's laws (`registry.rs`), with or without rolling resistance.
 #[derive(Debug)]
-pub(crate) enum AnyTable<F: Float> {
+pub(crate) enum AnyTable<F: Real> {
     Plain(PlainTable<F>),
     Rolled(RolledTable<F>),
 }
@@ -409,9 +409,7 @@ macro_rules! each_table {
     };
 }
 
-pub(crate) fn linear<F: Float>(
-    c: &ss_coefficients<F>,
-) -> Result<LinearMaterial<F>, ParameterError> {
+pub(crate) fn linear<F: Real>(c: &ss_coefficients<F>) -> Result<LinearMaterial<F>, ParameterError> {
     Ok(LinearMaterial {
         normal_stiffness: c.normal_stiffness,
         restitution: c.restitution,
@@ -422,7 +420,7 @@ pub(crate) fn linear<F: Float>(
 }
 
 /// A frictionless law reads no tangential coefficient: valid placeholders stand in for them.
-pub(crate) fn linear_frictionless<F: Float>(
+pub(crate) fn linear_frictionless<F: Real>(
     c: &ss_coefficients<F>,
 ) -> Result<LinearMaterial<F>, ParameterError> {
     Ok(LinearMaterial {
@@ -433,7 +431,7 @@ pub(crate) fn linear_frictionless<F: Float>(
     })
 }
 
-pub(crate) fn elastic<F: Float>(
+pub(crate) fn elastic<F: Real>(
     c: &ss_coefficients<F>,
 ) -> Result<ElasticMaterial<F>, ParameterError> {
     Ok(ElasticMaterial {
@@ -444,7 +442,7 @@ pub(crate) fn elastic<F: Float>(
     })
 }
 
-pub(crate) fn elastic_frictionless<F: Float>(
+pub(crate) fn elastic_frictionless<F: Real>(
     c: &ss_coefficients<F>,
 ) -> Result<ElasticMaterial<F>, ParameterError> {
     Ok(ElasticMaterial {
@@ -454,7 +452,7 @@ pub(crate) fn elastic_frictionless<F: Float>(
     })
 }
 
-impl<F: Float, X: Mixing<F>> Tabled<F, X>
+impl<F: Real, X: Mixing<F>> Tabled<F, X>
 where
     <X::Law as Law>::State: Flat<F>,
 {
@@ -647,7 +645,7 @@ where
     }
 }
 
-pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> {
+pub(crate) fn new_table<F: Real>(config: &ss_table_config<F>) -> Result<AnyTable<F>, i32> {
     let m = config.materials;
     if m == 0 || m > SS_MATERIALS_MAX {
         return Err(SS_ERR_MATERIAL);
@@ -680,7 +678,7 @@ pub(crate) fn new_table<F: Float>(config: &ss_table_config<F>) -> Result<AnyTabl
 
 /// A table of laws with the elastic-plastic rolling resistance (the smallest inertia checked
 /// here).
-pub(crate) fn rolled_table<F: Float>(
+pub(crate) fn rolled_table<F: Real>(
     config: &ss_table_config<F>,
     impact: HertzImpact<F>,
 ) -> Result<AnyTable<F>, i32> {
@@ -694,7 +692,7 @@ pub(crate) fn rolled_table<F: Float>(
 
 /// # Safety
 /// As the exported table constructors.
-pub(crate) unsafe fn table_new<F: Float>(
+pub(crate) unsafe fn table_new<F: Real>(
     config: *const ss_table_config<F>,
     out: *mut *mut ss_table<F>,
 ) -> i32 {
@@ -714,7 +712,7 @@ pub(crate) unsafe fn table_new<F: Float>(
 
 /// # Safety
 /// As the exported table destructors.
-pub(crate) unsafe fn table_free<F: Float>(table: *mut ss_table<F>) {
+pub(crate) unsafe fn table_free<F: Real>(table: *mut ss_table<F>) {
     if !table.is_null() {
         // SAFETY: the handle came from Box::into_raw in table_new.
         drop(unsafe { Box::from_raw(table) });
@@ -723,7 +721,7 @@ pub(crate) unsafe fn table_free<F: Float>(table: *mut ss_table<F>) {
 
 /// # Safety
 /// As the exported pair setters.
-pub(crate) unsafe fn table_set<F: Float>(
+pub(crate) unsafe fn table_set<F: Real>(
     table: *mut ss_table<F>,
     a: usize,
     b: usize,
@@ -803,7 +801,7 @@ fn step_of_pairs<L: Law>(
 
 /// # Safety
 /// As the exported pair setters.
-pub(crate) unsafe fn table_set_pairs<F: Float>(
+pub(crate) unsafe fn table_set_pairs<F: Real>(
     table: *mut ss_table<F>,
     pairs: *const u32,
     count: usize,
@@ -826,7 +824,7 @@ pub(crate) unsafe fn table_set_pairs<F: Float>(
 
 /// # Safety
 /// As the exported wall-material setters.
-pub(crate) unsafe fn table_set_walls<F: Float>(
+pub(crate) unsafe fn table_set_walls<F: Real>(
     table: *mut ss_table<F>,
     materials: *const u32,
     count: usize,
@@ -846,7 +844,7 @@ pub(crate) unsafe fn table_set_walls<F: Float>(
 
 /// # Safety
 /// As the exported preparers.
-pub(crate) unsafe fn table_prepare<F: Float>(
+pub(crate) unsafe fn table_prepare<F: Real>(
     table: *mut ss_table<F>,
     time_step: (F, bool),
     lightest_mass: *const F,
@@ -877,7 +875,7 @@ pub(crate) unsafe fn table_prepare<F: Float>(
 
 /// # Safety
 /// As the exported list entries.
-pub(crate) unsafe fn table_evaluate<F: Float>(
+pub(crate) unsafe fn table_evaluate<F: Real>(
     table: *mut ss_table<F>,
     atoms: *const ss_atoms<F>,
     list: *const ss_neighbours,
@@ -961,7 +959,7 @@ pub unsafe extern "C" fn ss_check_neighbours(
 
 /// # Safety
 /// As the exported walls entries.
-pub(crate) unsafe fn table_evaluate_walls<F: Float>(
+pub(crate) unsafe fn table_evaluate_walls<F: Real>(
     table: *mut ss_table<F>,
     atoms: *const ss_atoms<F>,
     walls: *const ss_walls<F>,
@@ -992,7 +990,7 @@ pub(crate) unsafe fn table_evaluate_walls<F: Float>(
 
 /// # Safety
 /// As the exported per-pair calls.
-pub(crate) unsafe fn table_pair<F: Float>(
+pub(crate) unsafe fn table_pair<F: Real>(
     table: *const ss_table<F>,
     a: usize,
     b: usize,
@@ -1009,7 +1007,7 @@ pub(crate) unsafe fn table_pair<F: Float>(
     each_table!(&table.table, t => table_pair_in(&**t, (a, b), (i, j), values, out))
 }
 
-pub(crate) fn table_pair_in<F: Float, X: Mixing<F>>(
+pub(crate) fn table_pair_in<F: Real, X: Mixing<F>>(
     t: &Tabled<F, X>,
     materials: (usize, usize),
     spheres: (&ss_sphere<F>, &ss_sphere<F>),
@@ -1030,7 +1028,7 @@ where
 }
 
 /// How many numbers the table's law keeps per contact.
-pub(crate) fn state_values<F: Float>(table: *const ss_table<F>) -> usize {
+pub(crate) fn state_values<F: Real>(table: *const ss_table<F>) -> usize {
     // SAFETY: null is checked; the caller promises validity otherwise.
     let Some(table) = (unsafe { table.as_ref() }) else {
         return 0;
@@ -1038,7 +1036,7 @@ pub(crate) fn state_values<F: Float>(table: *const ss_table<F>) -> usize {
     each_table!(&table.table, t => values_of(&**t))
 }
 
-pub(crate) fn values_of<F: Float, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
+pub(crate) fn values_of<F: Real, X: Mixing<F>>(_: &Tabled<F, X>) -> usize
 where
     <X::Law as Law>::State: Flat<F>,
 {
@@ -1047,7 +1045,7 @@ where
 
 /// # Safety
 /// As the exported state mirrors.
-pub(crate) unsafe fn table_mirror<F: Float>(
+pub(crate) unsafe fn table_mirror<F: Real>(
     table: *const ss_table<F>,
     source: *const F,
     target: *mut F,
@@ -1059,7 +1057,7 @@ pub(crate) unsafe fn table_mirror<F: Float>(
     each_table!(&table.table, t => mirror_in(&**t, source, target))
 }
 
-pub(crate) fn mirror_in<F: Float, X: Mixing<F>>(
+pub(crate) fn mirror_in<F: Real, X: Mixing<F>>(
     _: &Tabled<F, X>,
     source: *const F,
     target: *mut F,
