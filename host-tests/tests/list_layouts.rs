@@ -5,9 +5,9 @@
 
 use host_tests::random::Xorshift;
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactList, Interaction, LinearMaterial, LinearMixing,
-    ListArray, ListError, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays, SphereSlice,
-    Spheres, SpringDisplacement, TimeStep, Vec3,
+    Backup, CheckedPairs, CheckedSphere, ContactError, ContactList, Interaction, LinearMaterial,
+    LinearMixing, ListArray, ListError, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays,
+    SphereSlice, Spheres, SpringDisplacement, TimeStep, Vec3,
 };
 
 const RADIUS: f64 = 0.5e-3;
@@ -36,6 +36,7 @@ fn table() -> Table {
 
 /// Spheres in a periodic box of side [`BOX`] with random velocities and spins, random
 /// materials, and every pair within reach through the minimum image, with its shift.
+#[derive(Clone)]
 struct Gas {
     spheres: Vec<Sphere<f64>>,
     materials: Vec<u32>,
@@ -50,6 +51,32 @@ impl Gas {
             .iter()
             .map(|s| CheckedSphere::new(*s).unwrap())
             .collect()
+    }
+
+    /// The spheres as one array of checked spheres, beside their materials.
+    fn slice<'a>(&'a self, checked: &'a [CheckedSphere<f64>]) -> SphereSlice<'a, f64> {
+        SphereSlice {
+            spheres: checked,
+            material: &self.materials,
+        }
+    }
+
+    /// Pair `k` through the one-contact path of its materials' law, its second sphere moved
+    /// by its shift.
+    fn one_contact(
+        &self,
+        table: &Table,
+        dt: TimeStep<f64>,
+        k: usize,
+        state: &mut SpringDisplacement<f64>,
+    ) -> Result<Interaction<f64>, ContactError> {
+        let [i, j] = self.pairs[k].map(|i| i as usize);
+        let law = table
+            .law(self.materials[i] as usize, self.materials[j] as usize)
+            .unwrap();
+        let mut image = self.spheres[j];
+        image.position += self.shifts[k];
+        law.sphere_sphere(&self.spheres[i], &image, state, dt)
     }
 
     fn new(count: usize, seed: u64) -> Self {
@@ -170,10 +197,7 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
         material: &gas.materials,
     };
     let checked = gas.checked();
-    let slice = SphereSlice {
-        spheres: &checked,
-        material: &gas.materials,
-    };
+    let slice = gas.slice(&checked);
     let dt = table.time_step(1e-6, &arrays, &[]).unwrap();
     let states = preloaded(gas.pairs.len());
     let list = (&gas.pairs[..], &gas.shifts[..], &states[..]);
@@ -190,15 +214,9 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
     );
     // Each pair against the law of its materials applied to it directly, its second sphere
     // moved by its shift.
-    for (k, &[i, j]) in gas.pairs.iter().enumerate() {
-        let (i, j) = (i as usize, j as usize);
-        let law = table
-            .law(gas.materials[i] as usize, gas.materials[j] as usize)
-            .unwrap();
-        let mut image = gas.spheres[j];
-        image.position += gas.shifts[k];
-        let mut state = states[k];
-        let direct = law.sphere_sphere(&gas.spheres[i], &image, &mut state, dt);
+    for (k, &before) in states.iter().enumerate() {
+        let mut state = before;
+        let direct = gas.one_contact(&table, dt, k, &mut state);
         assert_eq!(direct, Ok(reference.records[k]), "pair {k}");
         assert_eq!(state, reference.states[k], "pair {k}");
     }
@@ -213,10 +231,7 @@ fn bad_shifts_and_material_arrays_are_refused_with_their_place() {
     let table = table();
     let gas = Gas::new(40, 8);
     let checked = gas.checked();
-    let slice = SphereSlice {
-        spheres: &checked,
-        material: &gas.materials,
-    };
+    let slice = gas.slice(&checked);
     let dt = table.time_step(1e-6, &slice, &[]).unwrap();
     let states = preloaded(gas.pairs.len());
     assert!(gas.pairs.len() > 3);
@@ -267,23 +282,14 @@ fn an_overflowing_pair_across_the_period_is_named() {
     let table = table();
     let gas = Gas::new(120, 5);
     let checked = gas.checked();
-    let slice = SphereSlice {
-        spheres: &checked,
-        material: &gas.materials,
-    };
+    let slice = gas.slice(&checked);
     let dt = table.time_step(1e-6, &slice, &[]).unwrap();
     let states = preloaded(gas.pairs.len());
     // The one-contact path on the images: the first pair in list order it refuses.
     let first_refused = |gas: &Gas| {
-        gas.pairs.iter().enumerate().find_map(|(k, &[i, j])| {
-            let (i, j) = (i as usize, j as usize);
-            let law = table
-                .law(gas.materials[i] as usize, gas.materials[j] as usize)
-                .unwrap();
-            let mut image = gas.spheres[j];
-            image.position += gas.shifts[k];
+        (0..gas.pairs.len()).find_map(|k| {
             let mut state = states[k];
-            law.sphere_sphere(&gas.spheres[i], &image, &mut state, dt)
+            gas.one_contact(&table, dt, k, &mut state)
                 .err()
                 .map(|error| ListError::Pair { pair: k, error })
         })
@@ -296,12 +302,7 @@ fn an_overflowing_pair_across_the_period_is_named() {
         if gas.shifts[k] == Vec3::ZERO {
             continue;
         }
-        let mut driven = Gas {
-            spheres: gas.spheres.clone(),
-            materials: gas.materials.clone(),
-            pairs: gas.pairs.clone(),
-            shifts: gas.shifts.clone(),
-        };
+        let mut driven = gas.clone();
         driven.spheres[i as usize].velocity = Vec3::new(-1.5e308, 0.0, 0.0);
         driven.spheres[j as usize].velocity = Vec3::new(1.5e308, 0.0, 0.0);
         let expected = first_refused(&driven);
@@ -314,10 +315,7 @@ fn an_overflowing_pair_across_the_period_is_named() {
         tried += 1;
         let list = (&driven.pairs[..], &driven.shifts[..], &states[..]);
         let checked = driven.checked();
-        let slice = SphereSlice {
-            spheres: &checked,
-            material: &driven.materials,
-        };
+        let slice = driven.slice(&checked);
         assert_eq!(
             evaluate(&table, dt, &slice, list).err(),
             expected,

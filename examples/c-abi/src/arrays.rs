@@ -397,8 +397,6 @@ pub(crate) unsafe fn bound_pairs<F: Real>(
     if !states.has(needed) {
         return SS_ERR_NULL;
     }
-    each_law!(&bound.bound, AnyBound, b => {
-        one_at_a_time(&mut b.law().at(b.time_step()), (&i, &j), &mut states, &mut out)
-    });
+    each_law!(&mut bound.bound, AnyBound, b => one_at_a_time(b, (&i, &j), &mut states, &mut out));
     SS_OK
 }
