@@ -12,6 +12,7 @@ pub mod plot;
 pub mod precision;
 pub mod random;
 pub mod scene;
+pub mod seam;
 pub mod strategies;
 pub mod triple;
 pub mod validation;

@@ -1,13 +1,13 @@
 //! The list seam over the layouts engines keep: spheres as one array per field or as one array
 //! of checked spheres give the same bits; a pair seen through a periodic image (its shift) is
-//! the pair with its second sphere moved; bad shifts are refused with their pair; after a call
-//! the backup holds every state as it was before it.
+//! the pair with its second sphere moved; bad shifts are refused with their pair.
 
 use host_tests::random::Xorshift;
+use host_tests::seam::evaluate_swapping;
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactError, ContactList, Interaction, LinearMaterial,
-    LinearMixing, ListArray, ListError, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays,
-    SphereSlice, Spheres, SpringDisplacement, TimeStep, Vec3,
+    CheckedPairs, CheckedSphere, ContactError, Interaction, LinearMaterial, LinearMixing,
+    ListArray, ListError, MaterialTable, ModelAA, Sphere, SphereArrays, SphereSlice, Spheres,
+    SpringDisplacement, TimeStep, Vec3,
 };
 
 const RADIUS: f64 = 0.5e-3;
@@ -130,7 +130,6 @@ struct Outcome {
     torques: Vec<Vec3<f64>>,
     states: Vec<SpringDisplacement<f64>>,
     records: Vec<Interaction<f64>>,
-    backup: Vec<SpringDisplacement<f64>>,
 }
 
 fn evaluate(
@@ -145,28 +144,13 @@ fn evaluate(
         torques: vec![Vec3::ZERO; n],
         states: states.to_vec(),
         records: vec![Interaction::Apart; pairs.len()],
-        backup: vec![SpringDisplacement::default(); pairs.len()],
     };
-    let mut loads = vec![Vec3::ZERO; 2 * n];
-    table.evaluate(
-        dt,
-        spheres,
-        ContactList {
-            pairs: CheckedPairs::new(pairs, shifts, n)?,
-            pair_states: &mut out.states,
-            walls: &[],
-            wall_states: &mut [],
-        },
-        ListOutput {
-            force: &mut out.forces,
-            torque: &mut out.torques,
-            backup: Backup {
-                states: &mut out.backup,
-                loads: &mut loads,
-            },
-            records: Some(&mut out.records),
-        },
-    )?;
+    let contacts = (
+        (CheckedPairs::new(pairs, shifts, n)?, &[][..]),
+        (&mut out.states[..], &mut [][..]),
+    );
+    let loads = (&mut out.forces[..], &mut out.torques[..]);
+    evaluate_swapping(table, dt, spheres, contacts, loads, Some(&mut out.records))?;
     Ok(out)
 }
 
@@ -222,8 +206,6 @@ fn both_layouts_and_shifted_pairs_give_the_one_contact_bits() {
     }
     // The other layout: the same bits.
     assert_eq!(evaluate(&table, dt, &slice, list).as_ref(), Ok(&reference));
-    // After the call the backup holds the states as they were before it.
-    assert_eq!(reference.backup, states);
 }
 
 #[test]

@@ -5,11 +5,12 @@
 //! one-contact path called pair by pair with the loads summed in list order.
 
 use host_tests::random::Xorshift;
+use host_tests::seam::evaluate_swapping;
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactLaw, ContactList, ElasticPlasticRolling, Float,
-    Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot, ListOutput, MaterialTable,
-    MindlinAA, MindlinAALuding, MindlinParameters, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
-    Sphere, SphereArrays, Stateless, Std, TangentialParameters, Vec3, effective_mass,
+    CheckedPairs, CheckedSphere, ContactLaw, ElasticPlasticRolling, Float, Hertz, HertzImpact,
+    Interaction, Law, LinearSpringDashpot, MaterialTable, MindlinAA, MindlinAALuding,
+    MindlinParameters, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere, SphereArrays,
+    Stateless, Std, TangentialParameters, Vec3, effective_mass,
 };
 
 const RADIUS: f64 = 1.0e-3;
@@ -139,7 +140,6 @@ where
     let n = p.position.len();
     let mut states = vec![L::State::default(); p.pairs.len()];
     let mut reference = states.clone();
-    let mut saved = (states.clone(), vec![Vec3::ZERO; 2 * n]);
     let mut covered = Covered {
         touching: 0,
         sliding: 0,
@@ -148,22 +148,12 @@ where
     };
     for step in 0..steps {
         let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-        let list = ContactList {
-            pairs: CheckedPairs::new(&p.pairs, &p.shifts, n).unwrap(),
-            pair_states: &mut states,
-            walls: &[],
-            wall_states: &mut [],
-        };
-        let out = ListOutput {
-            force: &mut force,
-            torque: &mut torque,
-            backup: Backup {
-                states: &mut saved.0,
-                loads: &mut saved.1,
-            },
-            records: None,
-        };
-        table.evaluate(dt, &p.arrays(), list, out).unwrap();
+        let contacts = (
+            (CheckedPairs::new(&p.pairs, &p.shifts, n).unwrap(), &[][..]),
+            (&mut states[..], &mut [][..]),
+        );
+        let loads = (&mut force[..], &mut torque[..]);
+        evaluate_swapping(&table, dt, &p.arrays(), contacts, loads, None).unwrap();
 
         let mut bound = table.law(0, 0).unwrap().at(dt);
         let (mut ref_force, mut ref_torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);

@@ -5,10 +5,11 @@
 use host_tests::impact::floor;
 use host_tests::random::Xorshift;
 use host_tests::scene::Threads;
+use host_tests::seam::{evaluate_swapping, evaluate_swapping_on};
 use proptest::prelude::*;
 use soft_sphere::executor::{Executor, Serial};
 use soft_sphere::{
-    Backup, CheckedPairs, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
+    CheckedPairs, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
     Interaction, Law, LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput,
     ListStats, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad,
     Parameter, ParameterError, SphereArrays, Spheres, SpringDisplacement, TableError, Vec3, Wall,
@@ -240,6 +241,10 @@ fn floor_of(material: u32) -> MaterialWall<f64> {
 
 /// Everything one evaluation changes, as text (Debug prints the shortest decimal that reads back
 /// to the same float, so equal text is equal bits).
+fn all_finite(v: &[Vec3<f64>]) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
 fn bits<T: std::fmt::Debug>(value: &T) -> String {
     format!("{value:?}")
 }
@@ -342,28 +347,24 @@ fn mixture_bits(walls: &[MaterialWall<f64>]) {
     let (mut ref_states, mut ref_wall_states) = (states.clone(), wall_states.clone());
     let contacts = m.pairs.len() + n * walls.len();
     let mut records = vec![Interaction::Apart; contacts];
-    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
     let (mut touching, mut mixed, mut sliding) = (0, 0, 0);
     let (mut on_walls, mut inaccurate) = (0, 0);
     let mut each_wall = vec![0; walls.len()];
+    // Whatever the force arrays held: the seam writes them.
+    let (mut force, mut torque) = (vec![Vec3::new(1.0, 2.0, 3.0); n], vec![Vec3::ZERO; n]);
     for step in 0..200 {
-        let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-        let list = ContactList {
-            pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
-            pair_states: &mut states,
-            walls,
-            wall_states: &mut wall_states,
-        };
-        let out = ListOutput {
-            force: &mut force,
-            torque: &mut torque,
-            backup: Backup {
-                states: &mut saved.0,
-                loads: &mut saved.1,
-            },
-            records: Some(&mut records),
-        };
-        let stats = t.evaluate(dt, &m.arrays(), list, out).unwrap();
+        let stats = evaluate_swapping(
+            &t,
+            dt,
+            &m.arrays(),
+            (
+                (CheckedPairs::new(&m.pairs, &[], n).unwrap(), walls),
+                (&mut states, &mut wall_states),
+            ),
+            (&mut force, &mut torque),
+            Some(&mut records),
+        )
+        .unwrap();
         let (ref_force, ref_torque, outcomes) =
             one_at_a_time(&t, &m, walls, dt, (&mut ref_states, &mut ref_wall_states)).unwrap();
         assert_eq!(bits(&force), bits(&ref_force), "step {step}: forces");
@@ -447,7 +448,9 @@ fn mixture_bits(walls: &[MaterialWall<f64>]) {
     );
 }
 
-/// A fresh list evaluation, compared with what it leaves.
+/// A fresh list evaluation from preloaded springs, its forces and torques given NaN (the seam
+/// writes them in full, so nothing the arrays held reaches its sums); on an error the states
+/// are as they were.
 fn try_evaluate(
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
@@ -455,7 +458,35 @@ fn try_evaluate(
     walls: &[MaterialWall<f64>],
     dt: soft_sphere::TimeStep<f64>,
 ) -> Result<(), ListError> {
-    try_evaluate_loaded(t, arrays, (pairs, walls), dt, None)
+    let n = arrays.len();
+    let preload = |k: usize| State {
+        displacement: Vec3::new(0.0, 1e-7 * k as f64, 0.0),
+    };
+    let mut states: Vec<State> = (0..pairs.len()).map(preload).collect();
+    let mut wall_states: Vec<State> = (0..n * walls.len()).map(preload).collect();
+    let before = bits(&(&states, &wall_states));
+    let (mut force, mut torque) = (vec![Vec3::new(f64::NAN, 0.0, 0.0); n], vec![Vec3::ZERO; n]);
+    torque.iter_mut().for_each(|t| t.z = f64::INFINITY);
+    let mut records = vec![Interaction::Apart; pairs.len() + n * walls.len()];
+    let result = evaluate_swapping(
+        t,
+        dt,
+        arrays,
+        (
+            (CheckedPairs::new(pairs, &[], n)?, walls),
+            (&mut states, &mut wall_states),
+        ),
+        (&mut force, &mut torque),
+        Some(&mut records),
+    );
+    match result {
+        Err(_) => {
+            let after = bits(&(&states, &wall_states));
+            assert_eq!(after, before, "{result:?} changed the caller's states");
+        }
+        Ok(_) => assert!(all_finite(&force) && all_finite(&torque)),
+    }
+    result.map(|_| ())
 }
 
 /// An evaluation's outcome, and the forces and torques it added to zero.
@@ -478,7 +509,7 @@ fn evaluate_plain<L: Law<Float = f64>>(
 }
 
 /// One evaluation of `pairs` (no walls or records) from `states`, advanced in place; the
-/// forces and torques it adds to zero.
+/// forces and torques it writes.
 fn evaluate_checked_pairs<L: Law<Float = f64>>(
     t: &MaterialTable<L, 3>,
     arrays: &SphereArrays<'_, f64>,
@@ -488,83 +519,18 @@ fn evaluate_checked_pairs<L: Law<Float = f64>>(
 ) -> Plain {
     let n = arrays.len();
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
-    let mut saved = (
-        vec![L::State::default(); pairs.len()],
-        vec![Vec3::ZERO; 2 * n],
+    let outcome = evaluate_swapping(
+        t,
+        dt,
+        arrays,
+        ((pairs, &[]), (states, &mut [])),
+        (&mut force, &mut torque),
+        None,
     );
-    let list = ContactList {
-        pairs,
-        pair_states: states,
-        walls: &[],
-        wall_states: &mut [],
-    };
-    let out = ListOutput {
-        force: &mut force,
-        torque: &mut torque,
-        backup: Backup {
-            states: &mut saved.0,
-            loads: &mut saved.1,
-        },
-        records: None,
-    };
-    let outcome = t.evaluate(dt, arrays, list, out);
     (outcome, force, torque)
 }
 
-/// [`try_evaluate`] with sphere `poisoned.0`'s force (or, when `poisoned.1`, torque) made NaN
-/// before the call, as a caller's array might hold it.
-fn try_evaluate_loaded(
-    t: &MaterialTable<Linear, 3>,
-    arrays: &SphereArrays<'_, f64>,
-    (pairs, walls): (&[[u32; 2]], &[MaterialWall<f64>]),
-    dt: soft_sphere::TimeStep<f64>,
-    poisoned: Option<(usize, bool)>,
-) -> Result<(), ListError> {
-    let n = arrays.len();
-    let preload = |k: usize| State {
-        displacement: Vec3::new(0.0, 1e-7 * k as f64, 0.0),
-    };
-    let mut states: Vec<State> = (0..pairs.len()).map(preload).collect();
-    let mut wall_states: Vec<State> = (0..n * walls.len()).map(preload).collect();
-    let mut force: Vec<_> = (0..n).map(|k| Vec3::new(k as f64, 1.0, 2.0)).collect();
-    let mut torque = force.clone();
-    match poisoned {
-        Some((k, false)) => force[k].y = f64::NAN,
-        Some((k, true)) => torque[k].z = f64::INFINITY,
-        None => {}
-    }
-    let before = bits(&(&states, &wall_states, &force, &torque));
-    let contacts = pairs.len() + n * walls.len();
-    let mut records = vec![Interaction::Apart; contacts];
-    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
-    let pairs = CheckedPairs::new(pairs, &[], n)?;
-    let result = t.evaluate(
-        dt,
-        arrays,
-        ContactList {
-            pairs,
-            pair_states: &mut states,
-            walls,
-            wall_states: &mut wall_states,
-        },
-        ListOutput {
-            force: &mut force,
-            torque: &mut torque,
-            backup: Backup {
-                states: &mut saved.0,
-                loads: &mut saved.1,
-            },
-            records: Some(&mut records),
-        },
-    );
-    if result.is_err() {
-        let after = bits(&(&states, &wall_states, &force, &torque));
-        assert_eq!(after, before, "{result:?} changed the caller's arrays");
-    }
-    result.map(|_| ())
-}
-
-/// An evaluation of pairs checked elsewhere, which must leave the caller's arrays as they were
+/// An evaluation of pairs checked elsewhere, which must leave the caller's states as they were
 /// when it refuses.
 fn evaluate_checked(
     t: &MaterialTable<Linear, 3>,
@@ -575,8 +541,9 @@ fn evaluate_checked(
     let mut states = vec![State::default(); pairs.len()];
     let (result, force, torque) = evaluate_checked_pairs(t, arrays, pairs, dt, &mut states);
     if result.is_err() {
-        let zero = |v: &[Vec3<f64>]| v.iter().all(|x| *x == Vec3::ZERO);
-        assert!(zero(&force) && zero(&torque) && states.iter().all(|s| *s == State::default()));
+        assert!(states.iter().all(|s| *s == State::default()));
+    } else {
+        assert!(all_finite(&force) && all_finite(&torque));
     }
     result.map(|_| ())
 }
@@ -639,35 +606,29 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
     }
     // The caller's own buffers of the wrong length.
     let n = m.position.len();
-    let mut states = vec![State::default(); m.pairs.len()];
-    let mut wall_states = vec![State::default(); n];
+    let states = vec![State::default(); m.pairs.len()];
+    let wall_states = vec![State::default(); n];
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let mut records = vec![Interaction::Apart; m.pairs.len() + n];
-    let mut saved = (
-        records.iter().map(|_| State::default()).collect::<Vec<_>>(),
-        vec![Vec3::ZERO; 2 * n],
-    );
+    let (mut next, mut next_walls) = (states.clone(), wall_states.clone());
     let mut run = |cut: usize| {
         let (p, w) = (states.len(), wall_states.len());
         let (f, r) = (force.len(), records.len());
-        let (bs, bl) = (saved.0.len(), saved.1.len());
         t.evaluate(
             dt,
             &m.arrays(),
             ContactList {
                 pairs: CheckedPairs::new(&m.pairs, &[], n).unwrap(),
-                pair_states: &mut states[..p - usize::from(cut == 0)],
+                pair_states: &states[..p - usize::from(cut == 0)],
                 walls: &walls,
-                wall_states: &mut wall_states[..w - usize::from(cut == 1)],
+                wall_states: &wall_states[..w - usize::from(cut == 1)],
             },
             ListOutput {
                 force: &mut force[..f - usize::from(cut == 2)],
                 torque: &mut torque[..f - usize::from(cut == 3)],
-                records: Some(&mut records[..r - usize::from(cut == 4)]),
-                backup: Backup {
-                    states: &mut saved.0[..bs - usize::from(cut == 5)],
-                    loads: &mut saved.1[..bl - usize::from(cut == 6)],
-                },
+                next_pair_states: &mut next[..p - usize::from(cut == 4)],
+                next_wall_states: &mut next_walls[..w - usize::from(cut == 5)],
+                records: Some(&mut records[..r - usize::from(cut == 6)]),
             },
         )
     };
@@ -676,9 +637,9 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
         ListArray::WallStates,
         ListArray::Force,
         ListArray::Torque,
+        ListArray::NextPairStates,
+        ListArray::NextWallStates,
         ListArray::Records,
-        ListArray::BackupStates,
-        ListArray::BackupLoads,
     ];
     for (cut, array) in expected.into_iter().enumerate() {
         assert_eq!(run(cut), Err(ListError::Length(array)));
@@ -732,27 +693,6 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             try_evaluate(&t, &arrays, &m.pairs, &walls, dt),
             Err(ListError::Sphere { sphere: 11, error })
         );
-    }
-    // A NaN or an infinity already in the caller's force or torque array (it passed through
-    // every sum).
-    for torque in [false, true] {
-        assert_eq!(
-            try_evaluate_loaded(&t, &m.arrays(), (&m.pairs, &walls), dt, Some((13, torque))),
-            Err(ListError::Load { sphere: 13 })
-        );
-    }
-    // In every place of a list whose length is not a multiple of the probes' four sums: the
-    // first bad load is named wherever it sits (the sums and the remainder after them).
-    let few = Mixture::new(7, 3);
-    let few_dt = t.coarse_time_step(1.0e-6, &few.arrays(), &walls).unwrap();
-    for sphere in 0..7 {
-        for torque in [false, true] {
-            let poisoned = Some((sphere, torque));
-            assert_eq!(
-                try_evaluate_loaded(&t, &few.arrays(), (&few.pairs, &walls), few_dt, poisoned),
-                Err(ListError::Load { sphere })
-            );
-        }
     }
     // A pair naming a sphere past the arrays.
     let mut pairs = m.pairs.clone();
@@ -1036,7 +976,6 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
         let dt = step.seconds();
         let pairs = [[0u32, 1], [1, 2]];
         let mut states = [Default::default(); 2];
-        let mut saved = ([Default::default(); 2], [Vec3::ZERO; 6]);
         let mut touched = 0;
         for _ in 0..200_000 {
             let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
@@ -1048,25 +987,12 @@ fn a_mixture_hertz_impact_faster_than_declared_is_refused_at_its_pair() {
                 mass: &masses,
                 material: &material,
             };
-            let stats = t.evaluate(
-                step,
-                &spheres,
-                ContactList {
-                    pairs: CheckedPairs::new(&pairs, &[], p.len()).unwrap(),
-                    pair_states: &mut states,
-                    walls: &[],
-                    wall_states: &mut [],
-                },
-                ListOutput {
-                    force: &mut force,
-                    torque: &mut torque,
-                    backup: Backup {
-                        states: &mut saved.0,
-                        loads: &mut saved.1,
-                    },
-                    records: None,
-                },
-            )?;
+            let contacts = (
+                (CheckedPairs::new(&pairs, &[], p.len()).unwrap(), &[][..]),
+                (&mut states[..], &mut [][..]),
+            );
+            let loads = (&mut force[..], &mut torque[..]);
+            let stats = evaluate_swapping(&t, step, &spheres, contacts, loads, None)?;
             touched += stats.pair_contacts;
             for k in 0..3 {
                 v[k] += force[k] * (dt / mass);
@@ -1141,28 +1067,15 @@ fn an_empty_list_and_walls_alone_work() {
     let mut wall_states = [State::default()];
     let (mut force, mut torque) = ([Vec3::ZERO], [Vec3::ZERO]);
     let mut records = [Interaction::Apart];
-    let mut saved = ([State::default()], [Vec3::ZERO; 2]);
-    let stats = t
-        .evaluate(
-            dt,
-            &arrays,
-            ContactList {
-                pairs: CheckedPairs::empty(),
-                pair_states: &mut [],
-                walls: &walls,
-                wall_states: &mut wall_states,
-            },
-            ListOutput {
-                force: &mut force,
-                torque: &mut torque,
-                backup: Backup {
-                    states: &mut saved.0,
-                    loads: &mut saved.1,
-                },
-                records: Some(&mut records),
-            },
-        )
-        .unwrap();
+    let stats = evaluate_swapping(
+        &t,
+        dt,
+        &arrays,
+        ((CheckedPairs::empty(), &walls), (&mut [], &mut wall_states)),
+        (&mut force, &mut torque),
+        Some(&mut records),
+    )
+    .unwrap();
     assert_eq!((stats.pair_contacts, stats.wall_contacts), (0, 1));
     // The rubber sphere on a glass floor: the mixed spring pushes it up by k_n delta.
     let k = (glass().normal_stiffness * rubber().normal_stiffness).sqrt();
@@ -1205,10 +1118,6 @@ fn every_list_and_table_error_says_where_and_why() {
             }
             .to_string(),
             vec!["sphere 11", "mass"],
-        ),
-        (
-            ListError::Load { sphere: 4 }.to_string(),
-            vec!["sphere 4", "not finite"],
         ),
         (
             ListError::PairIndex { pair: 3 }.to_string(),
@@ -1294,7 +1203,7 @@ fn first_refused_one_at_a_time(
 /// in list order; a chunk whose results are finite but whose sum overflows stands, with the
 /// one-contact path's bits.
 /// A law that keeps no state (Model C: the state is `()`, always finite) is tested on its
-/// forces alone: a contact that overflows is refused by the chunk's probe, nothing changed.
+/// forces alone: a contact that overflows is refused by the chunk's probe.
 #[test]
 fn a_contact_of_a_law_without_state_is_refused_on_its_forces() {
     let t = MaterialTable::<soft_sphere::ContactLaw<f64, _, ModelC<f64>>, 3>::mixed(
@@ -1315,7 +1224,7 @@ fn a_contact_of_a_law_without_state_is_refused_on_its_forces() {
     m.velocity[i].x = 1.7e308;
     m.velocity[j].x = -1.7e308;
     let mut states = vec![(); m.pairs.len()];
-    let (outcome, force, torque) = evaluate_plain(&t, &m, dt, &mut states);
+    let (outcome, _, _) = evaluate_plain(&t, &m, dt, &mut states);
     assert_eq!(
         outcome.map(|_| ()),
         Err(ListError::Pair {
@@ -1323,7 +1232,6 @@ fn a_contact_of_a_law_without_state_is_refused_on_its_forces() {
             error: ContactError::NonFiniteResult
         })
     );
-    assert!(force.iter().chain(&torque).all(|v| *v == Vec3::ZERO));
 }
 
 #[test]
@@ -1434,23 +1342,12 @@ fn evaluate_on<E: Executor>(
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let contacts = pairs.len() + n * walls.len();
     let mut records = vec![Interaction::Apart; contacts];
-    let mut saved = (vec![State::default(); contacts], vec![Vec3::ZERO; 2 * n]);
-    let list = ContactList {
-        pairs: CheckedPairs::new(pairs, &[], n).unwrap(),
-        pair_states: states,
-        walls,
-        wall_states,
-    };
-    let out = ListOutput {
-        force: &mut force,
-        torque: &mut torque,
-        backup: Backup {
-            states: &mut saved.0,
-            loads: &mut saved.1,
-        },
-        records: Some(&mut records),
-    };
-    let result = t.evaluate_on((executor, loads), dt, &m.arrays(), list, out);
+    let contacts = (
+        (CheckedPairs::new(pairs, &[], n).unwrap(), walls),
+        (states, wall_states),
+    );
+    let out = (&mut force[..], &mut torque[..], Some(&mut records[..]));
+    let result = evaluate_swapping_on(t, (executor, loads), dt, &m.arrays(), contacts, out);
     let text = bits(&(&force, &torque, &records));
     (result, force, torque, text)
 }

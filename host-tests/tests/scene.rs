@@ -968,8 +968,8 @@ fn buffer_sizes_follow_the_documented_counts_and_bad_domains_are_refused() {
         Ok(soft_sphere_scene::BufferSizes {
             cells: 125 + 1 + 7,
             pairs: 40,
-            vectors: 40 + 5 * 7,
-            // The list's states and two per sphere (one per wall), and their copy.
+            vectors: 40 + 3 * 7,
+            // The list's states and two per sphere (one per wall), double-buffered.
             states: 2 * (40 + 7 * 2),
             parking: 7,
             records: 40 + 7 * 2,
@@ -1279,6 +1279,7 @@ fn a_threaded_step_over_caller_buffers_gives_the_bits_of_one_thread() {
         .map(|_| scene.step_on(&input, &pool).unwrap().pair_contacts)
         .max();
     assert_eq!(touching, Some(2), "both pairs touched at once");
+    drop(scene);
     assert_eq!(motion_bits(&threaded), motion_bits(&serial));
 }
 
@@ -1366,6 +1367,7 @@ fn each_sphere_keeps_its_own_spring_on_each_wall() {
     for _ in 0..steps {
         scene.step(&input).unwrap();
     }
+    drop(scene);
     let direct: Vec<CheckedSphere<f64>> = direct
         .into_iter()
         .map(|s| CheckedSphere::new(s).unwrap())

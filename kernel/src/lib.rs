@@ -242,7 +242,7 @@ pub use laws::{
     HertzAA, HertzAALuding, HertzFrictionless, HertzMicroSlip, HertzStateless, LinearAA,
     LinearAALuding, LinearFrictionless, LinearStateless,
 };
-pub use list::{Backup, ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall};
+pub use list::{ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall};
 pub use material::Material;
 pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
 pub use normal::{

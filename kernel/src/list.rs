@@ -3,9 +3,10 @@
 //! An engine keeps its spheres as arrays (positions, velocities, spins, radii, masses, material
 //! ids) and a neighbour list as index pairs. [`MaterialTable::evaluate`] takes those as they
 //! are, checks every sphere once, evaluates each pair and each sphere-wall contact with its
-//! pair of materials' law, and only when every contact succeeded advances the states and adds
-//! the forces and torques into the engine's arrays: on an error nothing the caller gave has
-//! changed, and the error says which sphere, pair or wall and why. The step is checked against
+//! pair of materials' law, reads the states the last step left and writes the next ones into a
+//! second buffer (double buffering: the engine swaps the two when the call succeeds), and
+//! writes each sphere's contact force and torque. The states it reads are borrowed shared, so
+//! on an error they are as they were, and the error says which sphere, pair or wall and why. The step is checked against
 //! the spheres present ([`MaterialTable::time_step`]): every pair of materials present at the
 //! smallest effective mass its spheres give, and every wall's material.
 
@@ -26,7 +27,7 @@ use crate::spread::{PairLoad, spread_pairs};
 use crate::table::MaterialTable;
 use crate::tangential::ContactState;
 use crate::time_step::TimeStep;
-use crate::vector::{Vec3, all_finite};
+use crate::vector::Vec3;
 use crate::wall::Wall;
 
 /// A wall (a plane or a cylinder) made of a material of the table.
@@ -45,50 +46,43 @@ pub struct ContactList<'a, F, S> {
     /// the spheres: by [`CheckedPairs::new`] for this call, or when the engine built its list
     /// ([`PairList::checked`](crate::PairList::checked)).
     pub pairs: CheckedPairs<'a, F>,
-    /// One state per pair, kept beside the pairs from step to step.
-    pub pair_states: &'a mut [S],
+    /// One state per pair as the last step left it, kept beside the pairs from step to step
+    /// (read; the next ones go to [`ListOutput::next_pair_states`]).
+    pub pair_states: &'a [S],
     /// The walls.
     pub walls: &'a [MaterialWall<F>],
     /// One state per sphere and wall, sphere by sphere: sphere `k` against wall `w` is entry
-    /// `k * walls.len() + w`.
-    pub wall_states: &'a mut [S],
+    /// `k * walls.len() + w`; as the last step left them (read).
+    pub wall_states: &'a [S],
 }
 
-/// Where an evaluation writes: the engine's force and torque arrays (one per sphere; the
-/// contacts' forces and torques are added to what they hold), the backup it puts everything
-/// back from when a contact is refused, and, when given, each contact's outcome.
+/// Where an evaluation writes, every element in full: each sphere's contact force and torque,
+/// each contact's next state (the second buffer of the engine's double-buffered states) and,
+/// when given, each contact's outcome. What these arrays held before the call is not read;
+/// after a refused call they hold nothing of meaning.
 #[derive(Debug)]
 pub struct ListOutput<'a, F, S> {
-    /// Force on each sphere (N), added to.
+    /// Each sphere's force from its contacts (N): the sum, in list order, of its contacts'.
     pub force: &'a mut [Vec3<F>],
-    /// Torque on each sphere (N m), added to.
+    /// Each sphere's torque from its contacts (N m), summed as [`ListOutput::force`] is.
     pub torque: &'a mut [Vec3<F>],
-    /// Working memory: a copy of what the call changes, restored when it fails.
-    pub backup: Backup<'a, F, S>,
+    /// Each pair's state after the step (one per pair; reset where apart). When the call
+    /// succeeds the engine swaps this buffer with [`ContactList::pair_states`].
+    pub next_pair_states: &'a mut [S],
+    /// Each sphere-wall contact's state after the step, in the order of
+    /// [`ContactList::wall_states`].
+    pub next_wall_states: &'a mut [S],
     /// Each contact's outcome when given (for force chains): the pairs' first, then the
     /// walls' in the order of their states ([`ListOutput::records_needed`] of them).
     pub records: Option<&'a mut [Interaction<F>]>,
 }
 
 impl<F, S> ListOutput<'_, F, S> {
-    /// The length of [`ListOutput::records`] and of [`Backup::states`] for `pairs` pairs and
-    /// `spheres` spheres against `walls` walls.
+    /// The length of [`ListOutput::records`] for `pairs` pairs and `spheres` spheres against
+    /// `walls` walls.
     pub fn records_needed(pairs: usize, spheres: usize, walls: usize) -> usize {
         pairs + spheres * walls
     }
-}
-
-/// The working memory in which an evaluation keeps a copy of what it changes (every state,
-/// every force and torque), so that a refused contact leaves the caller's arrays exactly as
-/// they were. After a call that succeeded, [`Backup::states`] holds every state as it was
-/// before the call (an engine can take the step back, or compare the springs before and
-/// after); after a refused one, nothing of meaning.
-#[derive(Debug)]
-pub struct Backup<'a, F, S> {
-    /// One per contact ([`ListOutput::records_needed`]).
-    pub states: &'a mut [S],
-    /// Two per sphere (its force and its torque).
-    pub loads: &'a mut [Vec3<F>],
 }
 
 /// Totals of one evaluation.
@@ -136,17 +130,18 @@ pub enum ListArray {
     Torque,
     /// [`ListOutput::records`] ([`ListOutput::records_needed`]).
     Records,
-    /// [`Backup::states`] ([`ListOutput::records_needed`]).
-    BackupStates,
-    /// [`Backup::loads`] (two per sphere).
-    BackupLoads,
+    /// [`ListOutput::next_pair_states`] (one per pair).
+    NextPairStates,
+    /// [`ListOutput::next_wall_states`] (one per sphere and wall).
+    NextWallStates,
     /// The per-pair loads of [`MaterialTable::evaluate_on`] (none, or one per pair).
     Loads,
     /// The working memory of [`check_pairs`](crate::check_pairs) (one per pair).
     Order,
 }
 
-/// Why a list evaluation or its time step was refused. Nothing the caller gave has changed.
+/// Why a list evaluation or its time step was refused. What the call reads (spheres, states,
+/// walls) is unchanged; what it writes holds nothing of meaning.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ListError {
     /// An array's length disagrees with the spheres' (or, for states and records, with the
@@ -172,12 +167,6 @@ pub enum ListError {
         sphere: usize,
         /// What is wrong with it.
         error: ContactError,
-    },
-    /// Sphere `sphere`'s force or torque, as given to be added to, is not finite: a NaN or an
-    /// infinity the caller's arrays already held would pass through every sum.
-    Load {
-        /// The sphere.
-        sphere: usize,
     },
     /// Pair `pair` names a sphere past the arrays.
     PairIndex {
@@ -236,10 +225,6 @@ impl core::fmt::Display for ListError {
                 write!(f, "wall {wall}'s material {material} is past the table")
             }
             Self::Sphere { sphere, error } => write!(f, "sphere {sphere}: {error}"),
-            Self::Load { sphere } => write!(
-                f,
-                "sphere {sphere}'s force or torque is not finite before the contacts are added"
-            ),
             Self::PairIndex { pair } => write!(f, "pair {pair} names a sphere past the arrays"),
             Self::Shift { pair } => write!(f, "pair {pair}'s shift is not finite"),
             Self::RepeatedPair { pair, first } => write!(
@@ -417,15 +402,16 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// Each contact gives the same bits, state and outcome as
     /// [`ContactLaw::sphere_sphere`](crate::ContactLaw::sphere_sphere) or
     /// [`ContactLaw::sphere_wall`](crate::ContactLaw::sphere_wall) with its law. Every sphere is
-    /// checked once. Each state is advanced (reset where apart), each touching contact's forces
-    /// and torques are added into `out.force` and `out.torque` in list order (so the sums are
-    /// the same bits on any number of threads), and `out.records`, when given, receives every contact's
-    /// outcome. If any contact is refused, every state, force and torque is put back from
-    /// `out.backup` before the error is returned.
+    /// checked once. Each contact's next state (its state advanced from `list`'s, reset where
+    /// apart) is written into `out`'s state buffers, each sphere's force and torque is written
+    /// as the sum of its touching contacts' in list order (so the sums are the same bits on any
+    /// number of threads), and `out.records`, when given, receives every contact's outcome.
+    /// `list`'s states are only read: after a refused call they are as they were, and an engine
+    /// swaps its two state buffers only after a call that succeeded.
     ///
     /// ```
     /// use soft_sphere::{
-    ///     Backup, CheckedPairs, ContactList, LinearMaterial, LinearMixing, ListOutput,
+    ///     CheckedPairs, ContactList, LinearMaterial, LinearMixing, ListOutput,
     ///     MaterialTable, ModelAA, SphereArrays, Vec3,
     /// };
     ///
@@ -445,33 +431,34 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// };
     /// let step = table.time_step(1.0e-6, &spheres, &[]).unwrap();
     ///
-    /// let mut pair_states = [Default::default(); 2];
+    /// // Double-buffered states: read from one, written into the other, swapped on success.
+    /// let (mut states, mut next) = ([Default::default(); 2], [Default::default(); 2]);
     /// let list = ContactList {
     ///     pairs: CheckedPairs::new(&[[0, 1], [1, 2]], &[], 3).unwrap(),
-    ///     pair_states: &mut pair_states,
+    ///     pair_states: &states,
     ///     walls: &[],
-    ///     wall_states: &mut [],
+    ///     wall_states: &[],
     /// };
     /// let (mut force, mut torque) = ([Vec3::ZERO; 3], [Vec3::ZERO; 3]);
-    /// let (mut saved_states, mut saved_loads) = ([Default::default(); 2], [Vec3::ZERO; 6]);
     /// let out = ListOutput {
     ///     force: &mut force,
     ///     torque: &mut torque,
-    ///     backup: Backup { states: &mut saved_states, loads: &mut saved_loads },
+    ///     next_pair_states: &mut next,
+    ///     next_wall_states: &mut [],
     ///     records: None,
     /// };
     /// let stats = table.evaluate(step, &spheres, list, out).unwrap();
+    /// core::mem::swap(&mut states, &mut next);
     /// assert_eq!(stats.pair_contacts, 2);
     /// assert!(force[0].x < 0.0 && force[2].x > 0.0); // pushed apart by the steel sphere
     /// assert!(force[1].x.abs() < 1e-15); // ... which is squeezed evenly
     /// ```
     ///
     /// # Errors
-    /// In this order, the first failure winning; nothing the caller gave is changed (states,
-    /// forces, torques; the records and the backup are then unspecified):
-    /// [`ListError::Length`] for an array of the wrong length; [`ListError::Material`] /
-    /// [`ListError::Sphere`] for the first bad sphere; [`ListError::Load`] for the first
-    /// sphere whose force or torque is not finite as given; [`ListError::WallMaterial`];
+    /// In this order, the first failure winning; `list` is unchanged and `out` holds nothing of
+    /// meaning: [`ListError::Length`] for an array of the wrong length;
+    /// [`ListError::Material`] / [`ListError::Sphere`] for the first bad sphere;
+    /// [`ListError::WallMaterial`];
     /// [`ListError::PairIndex`] (then [`ListError::Shift`]) for the first bad pair, only when
     /// the pairs were checked for more spheres than these (a list checked for these spheres or
     /// fewer is not checked again); [`ListError::Pair`] and
@@ -529,9 +516,17 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             ),
             (out.force.len(), n, ListArray::Force),
             (out.torque.len(), n, ListArray::Torque),
+            (
+                out.next_pair_states.len(),
+                pairs.len(),
+                ListArray::NextPairStates,
+            ),
+            (
+                out.next_wall_states.len(),
+                n * walls.len(),
+                ListArray::NextWallStates,
+            ),
             (records, contacts, ListArray::Records),
-            (out.backup.states.len(), contacts, ListArray::BackupStates),
-            (out.backup.loads.len(), 2 * n, ListArray::BackupLoads),
             (
                 loads.len(),
                 if loads.is_empty() { 0 } else { pairs.len() },
@@ -542,23 +537,14 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             return Err(ListError::Length(array));
         }
         check_materials::<_, MATERIALS>(spheres)?;
-        // One probe over both arrays; the first bad sphere is looked for only when it fails.
-        if !(all_finite(out.force) && all_finite(out.torque)) {
-            let finite = |k: &usize| out.force[*k].is_finite() && out.torque[*k].is_finite();
-            let sphere = (0..n).find(|k| !finite(k)).unwrap_or(0);
-            return Err(ListError::Load { sphere });
-        }
         check_walls::<_, MATERIALS>(walls)?;
         // Checked when the pairs were made, for as many spheres as these or fewer; a list
         // checked for more is checked again against these.
         if list.pairs.spheres() > n {
             check_places((pairs, shifts), n)?;
         }
-        let (saved_pairs, saved_walls) = out.backup.states.split_at_mut(pairs.len());
-        saved_walls.copy_from_slice(list.wall_states);
-        let (saved_force, saved_torque) = out.backup.loads.split_at_mut(n);
-        saved_force.copy_from_slice(out.force);
-        saved_torque.copy_from_slice(out.torque);
+        out.force.fill(Vec3::ZERO);
+        out.torque.fill(Vec3::ZERO);
         let mut sink = Sink {
             force: out.force,
             torque: out.torque,
@@ -568,7 +554,7 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
         let laws = self.rows();
         let mut bound: [[BoundLaw<L>; MATERIALS]; MATERIALS] =
             core::array::from_fn(|a| core::array::from_fn(|b| laws[a][b].at(time_step)));
-        let states = (&mut *list.pair_states, &mut *saved_pairs);
+        let states = (list.pair_states, &mut *out.next_pair_states);
         let outcome = if E::PARALLEL && !loads.is_empty() {
             spread_pairs(
                 executor,
@@ -589,23 +575,16 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
             )
             .map(|()| 0)
         };
-        let outcome = outcome.and_then(|spread_unstable| {
-            let walls = (walls, &mut *list.wall_states);
-            evaluate_walls(spheres, walls, &mut bound, &mut sink, pairs.len())
-                .map(|()| spread_unstable)
-                .map_err(|error| (error, pairs.len()))
-        });
-        let spread_unstable = match outcome {
-            Ok(count) => count,
-            Err((error, copied)) => {
-                // Only the pairs whose states were copied can have changed.
-                list.pair_states[..copied].copy_from_slice(&saved_pairs[..copied]);
-                list.wall_states.copy_from_slice(saved_walls);
-                sink.force.copy_from_slice(saved_force);
-                sink.torque.copy_from_slice(saved_torque);
-                return Err(error);
-            }
-        };
+        let spread_unstable = outcome?;
+        let wall_states = (list.wall_states, &mut *out.next_wall_states);
+        evaluate_walls(
+            spheres,
+            walls,
+            wall_states,
+            &mut bound,
+            &mut sink,
+            pairs.len(),
+        )?;
         sink.stats.inaccurate_contacts = spread_unstable
             + bound
                 .iter()
@@ -748,31 +727,28 @@ fn shifted<F: Float>(sphere: Sphere<F>, shift: Vec3<F>) -> Sphere<F> {
 /// first pair.
 pub(crate) type Stretch<'a, F> = (&'a [[u32; 2]], &'a [Vec3<F>], usize);
 
-/// Every pair, chunk by chunk: each chunk's states copied into `saved` just before it is
-/// touched (while they are in cache), then sifted, evaluated one at a time and
-/// committed in list order. `offset` is the list place of `pairs[0]`. Stops at the first chunk
-/// with a refused pair, naming the first in list order, with how many of these pairs' states it
-/// had copied (and may have changed).
+/// Every pair, chunk by chunk: sifted, evaluated one at a time from its state in `states` into
+/// `next`, and committed in list order. `offset` is the list place of `pairs[0]`. Stops at the
+/// first chunk with a refused pair, naming the first in list order.
 pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts, offset): Stretch<'_, L::Float>,
-    (states, saved): (&mut [L::State], &mut [L::State]),
+    (states, next): (&[L::State], &mut [L::State]),
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut impl Commit<L::Float>,
-) -> Result<(), (ListError, usize)> {
+) -> Result<(), ListError> {
     let spheres = &spheres.evened();
     let mut sifts = Sifts::<L::Float>::new();
-    let chunks = pairs.chunks(SIFT).zip(states.chunks_mut(SIFT));
-    for (c, ((chunk, states), saved)) in chunks.zip(saved.chunks_mut(SIFT)).enumerate() {
+    let chunks = pairs.chunks(SIFT).zip(states.chunks(SIFT));
+    for (c, ((chunk, states), next)) in chunks.zip(next.chunks_mut(SIFT)).enumerate() {
         let local = c * SIFT;
         let first = offset + local;
-        // Read from the copy, written afresh: a pair apart is left relaxed, as the one-contact
-        // path leaves it, with no branch on the coin toss of touching.
-        saved.copy_from_slice(states);
+        // Written afresh: a pair apart is left relaxed, as the one-contact path leaves it, with
+        // no branch on the coin toss of touching.
         if size_of::<L::State>() > 0 {
-            states.fill(L::State::default());
+            next.fill(L::State::default());
         }
-        let states = (&mut *states, &*saved);
+        let states = (&mut *next, states);
         let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
         let found = sifts.sift(spheres, (chunk, shifts));
         let mut tally = sink.begin_chunk(first, chunk.len());
@@ -788,17 +764,18 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize>(
         sink.end_chunk(tally);
         if let Some((k, error)) = failed {
             let pair = first + k;
-            return Err((ListError::Pair { pair, error }, local + chunk.len()));
+            return Err(ListError::Pair { pair, error });
         }
     }
     Ok(())
 }
 
-/// Every sphere against every wall, sifted by distance ([`next_reaching`]), one at a time,
-/// committed as they go.
+/// Every sphere against every wall, sifted by distance ([`next_reaching`]), one at a time from
+/// its state in `states` into `next`, committed as they go.
 fn evaluate_walls<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
-    (walls, states): (&[MaterialWall<L::Float>], &mut [L::State]),
+    walls: &[MaterialWall<L::Float>],
+    (states, next): (&[L::State], &mut [L::State]),
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut Sink<'_, L::Float>,
     first: usize,
@@ -811,13 +788,16 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
     }
     let count = walls.len();
     let mut from = 0;
-    while let Some(place) = next_reaching(spheres, walls, states, from) {
+    while let Some(place) = next_reaching(spheres, walls, next, from) {
         from = place + 1;
         let (k, w) = (place / count, place % count);
         let wall = &walls[w];
         let body = CheckedSphere::trusted(spheres.sphere(k));
         let law = &mut bound[spheres.material(k) as usize][wall.material as usize];
-        match law.sphere_wall(&body, &wall.wall, &mut states[place]) {
+        let mut state = states[place];
+        let outcome = law.sphere_wall(&body, &wall.wall, &mut state);
+        next[place] = state;
+        match outcome {
             Ok(Interaction::Touching(c)) => sink.wall(first + place, k, &c),
             Ok(Interaction::Apart) => {}
             Err(error) => {
@@ -832,8 +812,8 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
     Ok(())
 }
 
-/// From place `from` on (sphere by sphere, wall by wall), resets the state of every contact
-/// whose sphere cannot reach its wall by the one-contact path's own test, and returns the first
+/// From place `from` on (sphere by sphere, wall by wall), writes the relaxed state of every
+/// contact whose sphere cannot reach its wall by the one-contact path's own test, and returns the first
 /// place whose sphere can. Most spheres are far from every wall: a small loop of its own keeps
 /// their cost to a distance and a store.
 #[inline(never)]
@@ -874,8 +854,8 @@ fn next_reaching<F: Float, S: Default>(
 
 /// The sifted pairs one at a time by the one-contact path's formulas, their roots taken for
 /// the whole chunk first ([`Law::sifted_roots`]), each touching pair committed
-/// to `sink` as it comes (`first` is the chunk's place in the list; a refused pair leaves
-/// forces the caller puts back); returns the first refused. The forces and states are tested
+/// to `sink` as it comes (`first` is the chunk's place in the list); returns the first
+/// refused. The forces and states are tested
 /// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
 /// when that test or a contact fails, [`first_refused`] re-runs the pairs checked to
 /// name the first refused in list order.
@@ -884,14 +864,14 @@ fn one_at_a_time<L: Law, const MATERIALS: usize>(
     (sifts, found): (&mut Sifts<L::Float>, usize),
     spheres: &impl Spheres<L::Float>,
     (chunk, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
-    (states, saved): (&mut [L::State], &[L::State]),
+    (next, states): (&mut [L::State], &[L::State]),
     bound: &mut [[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut impl Commit<L::Float>,
     (first, tally): (usize, &mut Tally<L::Float>),
 ) -> Option<(usize, ContactError)> {
     // Counted in a local copy, which stays in registers across the stores of the loads.
     let mut counted = *tally;
-    L::sifted_roots(sifts, found, saved, Deferred(()));
+    L::sifted_roots(sifts, found, states, Deferred(()));
     let mut probe = <L::Float as Float>::ZERO;
     let mut finite_states = true;
     for (place, &k) in sifts.places[..found].iter().enumerate() {
@@ -903,7 +883,7 @@ fn one_at_a_time<L: Law, const MATERIALS: usize>(
             CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
         );
         let sifted = sifts.pair(place);
-        let mut state = saved[k];
+        let mut state = states[k];
         match law.sphere_sphere_sifted(&a, &b, &sifted, &mut state) {
             Ok(Interaction::Touching(forces)) => {
                 probe += forces.finite_probe();
@@ -914,11 +894,11 @@ fn one_at_a_time<L: Law, const MATERIALS: usize>(
             Ok(Interaction::Apart) => {}
             Err(error) => {
                 let earlier = &sifts.places[..place];
-                let refused = first_refused(spheres, (chunk, shifts), saved, earlier, bound);
+                let refused = first_refused(spheres, (chunk, shifts), states, earlier, bound);
                 return Some(refused.unwrap_or((k, error)));
             }
         }
-        states[k] = state;
+        next[k] = state;
     }
     *tally = counted;
     if probe.is_finite() && finite_states {
@@ -928,20 +908,20 @@ fn one_at_a_time<L: Law, const MATERIALS: usize>(
     first_refused(
         spheres,
         (chunk, shifts),
-        saved,
+        states,
         &sifts.places[..found],
         bound,
     )
 }
 
 /// The first of the sifted `places` that the one-contact path refuses, each evaluated checked
-/// from its saved state on a copy of its bound law (nothing is written, nothing counted twice).
+/// from its state on a copy of its bound law (nothing is written, nothing counted twice).
 #[cold]
 #[inline(never)]
 fn first_refused<L: Law, const MATERIALS: usize>(
     spheres: &impl Spheres<L::Float>,
     (chunk, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
-    saved: &[L::State],
+    states: &[L::State],
     places: &[u16],
     bound: &[[BoundLaw<L>; MATERIALS]; MATERIALS],
 ) -> Option<(usize, ContactError)> {
@@ -953,7 +933,7 @@ fn first_refused<L: Law, const MATERIALS: usize>(
             CheckedSphere::trusted(spheres.sphere(i)),
             CheckedSphere::trusted(shifted(spheres.sphere(j), shift(shifts, k))),
         );
-        let mut state = saved[k];
+        let mut state = states[k];
         law.sphere_sphere(&a, &b, &mut state)
             .err()
             .map(|error| (k, error))

@@ -70,36 +70,35 @@ impl<F: Float> Commit<F> for PairLoads<'_, F> {
 }
 
 /// A stretch of the list and what its thread leaves: the tolerated unstable contacts it
-/// counted, or its first refused pair with how many of its states it had copied.
+/// counted, or its first refused pair.
 struct Piece<'p, F, S> {
     offset: usize,
     pairs: &'p [[u32; 2]],
     shifts: &'p [Vec3<F>],
-    states: &'p mut [S],
-    saved: &'p mut [S],
+    states: &'p [S],
+    next: &'p mut [S],
     loads: PairLoads<'p, F>,
-    outcome: Result<usize, (ListError, usize)>,
+    outcome: Result<usize, ListError>,
 }
 
 /// Every pair, spread over `executor` in pieces of whole chunks, each with its own copy of the
 /// bound laws; then, when every piece succeeded, their loads added onto the spheres in list
-/// order. Returns the tolerated unstable contacts the pieces' bound laws counted. On a refused
-/// pair, the first in list order (the earliest piece's first) is returned with every copied
-/// state put back, so the caller has none to restore.
+/// order. Returns the tolerated unstable contacts the pieces' bound laws counted, or the first
+/// refused pair in list order (the earliest piece's first).
 pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
     executor: &E,
     spheres: &impl Spheres<L::Float>,
     (pairs, shifts): (&[[u32; 2]], &[Vec3<L::Float>]),
-    (states, saved): (&mut [L::State], &mut [L::State]),
+    (states, next): (&[L::State], &mut [L::State]),
     loads: &mut [PairLoad<L::Float>],
     bound: &[[BoundLaw<L>; MATERIALS]; MATERIALS],
     sink: &mut Sink<'_, L::Float>,
-) -> Result<usize, (ListError, usize)> {
+) -> Result<usize, ListError> {
     // Stretches of at least four chunks: each thread's stretch starts its own working memory.
     let length = piece_length(pairs.len().div_ceil(SIFT), 4) * SIFT;
     let mut pair_pieces = pairs.chunks(length);
-    let mut state_pieces = states.chunks_mut(length);
-    let mut saved_pieces = saved.chunks_mut(length);
+    let mut state_pieces = states.chunks(length);
+    let mut next_pieces = next.chunks_mut(length);
     let mut load_pieces = loads.chunks_mut(length);
     let records = sink.records.as_deref_mut().map(|r| &mut r[..pairs.len()]);
     let mut record_pieces = records.map(|r| r.chunks_mut(length));
@@ -111,7 +110,7 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
             pairs,
             shifts: shifts.get(offset..offset + pairs.len()).unwrap_or(&[]),
             states: state_pieces.next()?,
-            saved: saved_pieces.next()?,
+            next: next_pieces.next()?,
             loads: PairLoads {
                 offset,
                 loads: load_pieces.next()?,
@@ -129,7 +128,7 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
         piece.outcome = evaluate_pairs::<L, MATERIALS>(
             spheres,
             (piece.pairs, piece.shifts, piece.offset),
-            (&mut *piece.states, &mut *piece.saved),
+            (piece.states, &mut *piece.next),
             &mut bound,
             &mut piece.loads,
         )
@@ -144,17 +143,9 @@ pub(crate) fn spread_pairs<L: Law, E: Executor, const MATERIALS: usize>(
     let refused = pieces
         .iter()
         .flatten()
-        .find_map(|piece| piece.outcome.as_ref().err().map(|&(error, _)| error));
+        .find_map(|piece| piece.outcome.as_ref().err().copied());
     if let Some(error) = refused {
-        // Every piece puts back what it copied, so the caller has nothing to restore.
-        for piece in pieces.iter_mut().flatten() {
-            let copied = match piece.outcome {
-                Ok(_) => piece.states.len(),
-                Err((_, copied)) => copied,
-            };
-            piece.states[..copied].copy_from_slice(&piece.saved[..copied]);
-        }
-        return Err((error, 0));
+        return Err(error);
     }
     let unstable = pieces
         .iter()

@@ -3,8 +3,8 @@
 //! evaluated and scattered back, all or nothing.
 
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactList, Interaction, Law, ListError, ListOutput,
-    ListStats, Mixing, Sphere, SphereArrays, Vec3, check_pairs,
+    CheckedPairs, CheckedSphere, ContactList, Interaction, Law, ListError, ListOutput, ListStats,
+    Mixing, Sphere, SphereArrays, Vec3, check_pairs,
 };
 
 use crate::{
@@ -229,11 +229,9 @@ where
             }
         }
         let contacts = work.pairs.len();
-        work.saved.resize(contacts, Default::default());
-        work.loads.resize(2 * n, Vec3::ZERO);
-        work.force.clear();
+        // Written in full by the kernel.
+        work.next.resize(contacts, Default::default());
         work.force.resize(n, Vec3::ZERO);
-        work.torque.clear();
         work.torque.resize(n, Vec3::ZERO);
         let per_pair = !loads.pair_force.is_null();
         work.records.clear();
@@ -257,17 +255,15 @@ where
             &spheres,
             ContactList {
                 pairs,
-                pair_states: &mut work.states,
+                pair_states: &work.states,
                 walls: &[],
-                wall_states: &mut [],
+                wall_states: &[],
             },
             ListOutput {
                 force: &mut work.force,
                 torque: &mut work.torque,
-                backup: Backup {
-                    states: &mut work.saved,
-                    loads: &mut work.loads,
-                },
+                next_pair_states: &mut work.next,
+                next_wall_states: &mut [],
                 records: per_pair.then_some(&mut work.records[..]),
             },
         );
@@ -290,13 +286,13 @@ where
                     let i = *list.atoms.add(ii) as usize;
                     let count = *list.neighbour_counts.add(i) as usize;
                     let touch = std::slice::from_raw_parts_mut(*h.first_touch.add(i), count);
-                    let kept = if advance { &work.states } else { &work.saved };
+                    let kept = if advance { &work.next } else { &work.states };
                     for (flag, state) in touch.iter_mut().zip(&kept[k..k + count]) {
                         *flag = i32::from(*state != Default::default());
                     }
                     if advance && values > 0 {
                         let at = *h.first_value.add(i);
-                        for (jj, state) in work.states[k..k + count].iter().enumerate() {
+                        for (jj, state) in work.next[k..k + count].iter().enumerate() {
                             state.write(std::slice::from_raw_parts_mut(
                                 at.add(jj * h.values),
                                 values,
@@ -458,11 +454,9 @@ where
             }
         }
         let m = work.index.len();
-        work.saved.resize(m * walls.count, Default::default());
-        work.loads.resize(2 * m, Vec3::ZERO);
-        work.force.clear();
+        // Written in full by the kernel.
+        work.next.resize(m * walls.count, Default::default());
         work.force.resize(m, Vec3::ZERO);
-        work.torque.clear();
         work.torque.resize(m, Vec3::ZERO);
         let spheres = SphereArrays {
             position: &work.position,
@@ -477,17 +471,15 @@ where
             &spheres,
             ContactList {
                 pairs: CheckedPairs::empty(),
-                pair_states: &mut [],
+                pair_states: &[],
                 walls: &work.walls,
-                wall_states: &mut work.states,
+                wall_states: &work.states,
             },
             ListOutput {
                 force: &mut work.force,
                 torque: &mut work.torque,
-                backup: Backup {
-                    states: &mut work.saved,
-                    loads: &mut work.loads,
-                },
+                next_pair_states: &mut [],
+                next_wall_states: &mut work.next,
                 records: None,
             },
         );
@@ -524,7 +516,7 @@ where
             if advance && values > 0 {
                 for w in 0..walls.count {
                     // SAFETY: as the gather.
-                    work.states[s * walls.count + w].write(unsafe {
+                    work.next[s * walls.count + w].write(unsafe {
                         std::slice::from_raw_parts_mut(
                             walls.states.add(k * walls.stride + w * walls.wall_stride),
                             values,
@@ -659,10 +651,6 @@ pub(crate) fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_li
         ListError::Pair { pair, error } => {
             report.atoms = atoms(pair);
             contact_code(error)
-        }
-        ListError::Load { sphere } => {
-            report.atoms = [sphere as i64, -1];
-            SS_ERR_NON_FINITE_INPUT
         }
         ListError::PairIndex { pair } => {
             report.atoms = atoms(pair);

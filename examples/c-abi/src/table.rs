@@ -259,9 +259,9 @@ pub(crate) type Pairs = [[bool; SS_MATERIALS_MAX]; SS_MATERIALS_MAX];
 pub(crate) struct Workspace<F, S> {
     pub(crate) material: Vec<u32>,
     pub(crate) pairs: Vec<[u32; 2]>,
+    /// The states as the host holds them, and the next ones the kernel writes.
     pub(crate) states: Vec<S>,
-    pub(crate) saved: Vec<S>,
-    pub(crate) loads: Vec<Vec3<F>>,
+    pub(crate) next: Vec<S>,
     pub(crate) force: Vec<Vec3<F>>,
     pub(crate) torque: Vec<Vec3<F>>,
     pub(crate) records: Vec<Interaction<F>>,
@@ -280,9 +280,9 @@ pub(crate) struct WallWork<F, S> {
     pub(crate) mass: Vec<F>,
     pub(crate) material: Vec<u32>,
     pub(crate) walls: Vec<MaterialWall<F>>,
+    /// The states as the host holds them, and the next ones the kernel writes.
     pub(crate) states: Vec<S>,
-    pub(crate) saved: Vec<S>,
-    pub(crate) loads: Vec<Vec3<F>>,
+    pub(crate) next: Vec<S>,
     pub(crate) force: Vec<Vec3<F>>,
     pub(crate) torque: Vec<Vec3<F>>,
 }
@@ -300,8 +300,7 @@ impl<F, S> WallWork<F, S> {
             material: Vec::new(),
             walls: Vec::new(),
             states: Vec::new(),
-            saved: Vec::new(),
-            loads: Vec::new(),
+            next: Vec::new(),
             force: Vec::new(),
             torque: Vec::new(),
         }
@@ -474,8 +473,7 @@ where
                 material: Vec::new(),
                 pairs: Vec::new(),
                 states: Vec::new(),
-                saved: Vec::new(),
-                loads: Vec::new(),
+                next: Vec::new(),
                 force: Vec::new(),
                 torque: Vec::new(),
                 records: Vec::new(),

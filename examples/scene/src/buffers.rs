@@ -14,12 +14,11 @@ pub struct BufferSizes {
     /// The length of [`SceneBuffers::pairs`]: the Verlet list's capacity (about 4.5 per sphere in a dense
     /// monodisperse packing with a skin of a tenth of a diameter).
     pub pairs: usize,
-    /// The length of [`SceneBuffers::vectors`]: one per list place (its periodic shift) and five per sphere
-    /// (force, torque, position at the last list build, and the force and torque a refused
-    /// step puts back).
+    /// The length of [`SceneBuffers::vectors`]: one per list place (its periodic shift) and three per
+    /// sphere (force, torque, position at the last list build).
     pub vectors: usize,
-    /// The length of [`SceneBuffers::states`]: twice (the states, and their copy a refused step puts back)
-    /// one per list place and one per sphere and wall.
+    /// The length of [`SceneBuffers::states`]: twice (the states a step reads, and the buffer it
+    /// writes the next ones into) one per list place and one per sphere and wall.
     pub states: usize,
     /// The length of [`SceneBuffers::parking`]: one per sphere, or none for a law that stores nothing.
     pub parking: usize,
@@ -45,8 +44,9 @@ pub struct SceneBuffers<'a, F, S, const K: usize> {
     pub pairs: &'a mut [[u32; 2]],
     /// Per list place and per sphere working vectors (see [`BufferSizes::vectors`]).
     pub vectors: &'a mut [Vec3<F>],
-    /// The contact states of the list's pairs, then of each sphere against each wall, then
-    /// their copy.
+    /// The contact states of the list's pairs, then of each sphere against each wall, then as
+    /// many again: the second buffer of the double-buffered states (a scene swaps the two at
+    /// every committed step and puts the current ones back in front when it is dropped).
     pub states: &'a mut [S],
     /// Where each sphere's stored states wait while the list is rebuilt (at most `K` each).
     pub parking: &'a mut [Parking<S, K>],

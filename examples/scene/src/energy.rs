@@ -111,7 +111,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                 (a.velocity, a.angular_velocity),
                 (b.velocity, b.angular_velocity),
             ];
-            let states = (&self.saved_states[k], &self.pair_states[k]);
+            // Called after the flip: the step's states before are in the other buffer.
+            let states = (&self.next_pair_states[k], &self.pair_states[k]);
             book(
                 law,
                 (radius, dt),
@@ -136,8 +137,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
                     (sphere.velocity, sphere.angular_velocity),
                     (velocity, wall.wall.angular_velocity()),
                 ];
-                // The wall states follow the pairs' in the records and the seam's copy.
-                let states = (&self.saved_states[k], &self.wall_states[k - count]);
+                // The wall states follow the pairs' in the records.
+                let k_wall = k - count;
+                let states = (&self.next_wall_states[k_wall], &self.wall_states[k_wall]);
                 let record = &self.records[k];
                 book(law, (sphere.radius, dt), motion, states, record, &mut sums);
                 if let Interaction::Touching(c) = record {

@@ -47,6 +47,7 @@ mod grid;
 mod owned;
 mod parallel;
 mod parking;
+mod states;
 mod step;
 mod view;
 #[cfg(feature = "vtk")]
@@ -148,10 +149,15 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
     force: &'a mut [Vec3<L::Float>],
     torque: &'a mut [Vec3<L::Float>],
     anchor: &'a mut [Vec3<L::Float>],
-    saved_loads: &'a mut [Vec3<L::Float>],
+    /// The states the last committed step left (read by the next evaluation), and the buffer
+    /// it writes into; swapped when a step commits ([`Scene::flip`]).
     pair_states: &'a mut [L::State],
     wall_states: &'a mut [L::State],
-    saved_states: &'a mut [L::State],
+    next_pair_states: &'a mut [L::State],
+    next_wall_states: &'a mut [L::State],
+    /// The current states sit in the back half of the caller's `states` buffer: put back in
+    /// front when the scene is dropped (see [`SceneBuffers`]).
+    flipped: bool,
     parking: &'a mut [Parking<L::State, K>],
     records: &'a mut [Interaction<L::Float>],
     loads: &'a mut [PairLoad<L::Float>],
@@ -247,7 +253,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         Ok(BufferSizes {
             cells: cells + 1 + spheres,
             pairs: list_capacity,
-            vectors: list_capacity + 5 * spheres,
+            vectors: list_capacity + 3 * spheres,
             states: 2 * contacts,
             parking: if stores::<L::State>() { spheres } else { 0 },
             records: if records { contacts } else { 0 },
@@ -308,9 +314,12 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         let (shifts, per_sphere) = b.vectors.split_at_mut(list);
         let (force, per_sphere) = per_sphere.split_at_mut(n);
         let (torque, per_sphere) = per_sphere.split_at_mut(n);
-        let (anchor, saved_loads) = per_sphere.split_at_mut(n);
-        let (pair_states, states) = b.states.split_at_mut(list);
-        let (wall_states, saved_states) = states.split_at_mut(n * W::COUNT);
+        let anchor = per_sphere;
+        let (current, next) = b.states.split_at_mut(list + n * W::COUNT);
+        let (pair_states, wall_states) = current.split_at_mut(list);
+        // Written in full before it is read, but kept relaxed past the list as the front is.
+        next.fill(relaxed);
+        let (next_pair_states, next_wall_states) = next.split_at_mut(list);
         // The shifts were cut to the pairs' length.
         let verlet = PairList::new(b.pairs, shifts).map_err(|_| SceneError::BufferLength)?;
         Ok(Self {
@@ -322,10 +331,11 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
             force,
             torque,
             anchor,
-            saved_loads,
             pair_states,
             wall_states,
-            saved_states,
+            next_pair_states,
+            next_wall_states,
+            flipped: false,
             parking: b.parking,
             records: b.records,
             loads: b.loads,
@@ -490,8 +500,9 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         };
         self.candidate_count = count;
         if stores::<L::State>() {
-            // Keep every state past the list relaxed (see `SceneBuffers`).
+            // Keep every state past the list relaxed (see `SceneBuffers`), in both buffers.
             self.pair_states[count..old_count.max(count)].fill(relaxed);
+            self.next_pair_states[count..old_count.max(count)].fill(relaxed);
             let listed = self
                 .list
                 .checked()
@@ -536,6 +547,7 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         // Parked from the scene's own pairs: inside the spheres and the buffers.
         let count = written.unwrap_or(0);
         self.pair_states[count..old_count.max(count)].fill(L::State::default());
+        self.next_pair_states[count..old_count.max(count)].fill(L::State::default());
         self.candidate_count = count;
     }
 }

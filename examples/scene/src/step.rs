@@ -5,7 +5,7 @@
 use core::array;
 
 use soft_sphere::motion::Kick;
-use soft_sphere::{Backup, ContactList, Float, Law, ListOutput, SphereSlice, Vec3};
+use soft_sphere::{ContactList, Float, Law, ListOutput, SphereSlice, Vec3};
 
 use crate::parallel::{Executor, MAX_PIECES, Serial, piece_length};
 use crate::{Energy, Integrator, Scene, StepError, StepInput, StepStats, WallSet};
@@ -257,8 +257,8 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
 
     /// Contact forces and torques at the current state into the force and torque arrays, in
     /// one call of the kernel's list seam, and, when `commit`, the history advanced (all or
-    /// nothing: the seam puts everything back when it refuses a contact, and a step that does
-    /// not commit puts the states back from the seam's copy).
+    /// nothing: the seam reads the current states and writes the next buffer, which becomes
+    /// current only when the call succeeds and the step commits).
     fn evaluate<E: Executor, const M: usize>(
         &mut self,
         input: &StepInput<'_, L, M>,
@@ -268,8 +268,6 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         if !self.list_current {
             self.rebuild_list()?;
         }
-        self.force.fill(Vec3::ZERO);
-        self.torque.fill(Vec3::ZERO);
         let count = self.candidate_count;
         let n = self.spheres.len();
         let contacts = count + n * W::COUNT;
@@ -280,17 +278,15 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         };
         let list = ContactList {
             pairs: self.list.checked(),
-            pair_states: &mut self.pair_states[..count],
+            pair_states: &self.pair_states[..count],
             walls: self.walls.walls(),
-            wall_states: &mut *self.wall_states,
+            wall_states: self.wall_states,
         };
         let out = ListOutput {
             force: &mut *self.force,
             torque: &mut *self.torque,
-            backup: Backup {
-                states: &mut self.saved_states[..contacts],
-                loads: &mut *self.saved_loads,
-            },
+            next_pair_states: &mut self.next_pair_states[..count],
+            next_wall_states: self.next_wall_states,
             records: keep_records.then(|| &mut self.records[..contacts]),
         };
         self.records_current = false;
@@ -300,15 +296,22 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         } else {
             &mut self.loads[..count]
         };
-        let list_stats = input
-            .table
-            .evaluate_on((executor, loads), input.time_step, &spheres, list, out)
-            .map_err(|error| StepError::from_list(error, self.list.checked().pairs()))?;
+        let list_stats =
+            input
+                .table
+                .evaluate_on((executor, loads), input.time_step, &spheres, list, out);
+        let list_stats = match list_stats {
+            Ok(stats) => stats,
+            Err(error) => {
+                // A refused evaluation leaves no forces of meaning: none, as before any.
+                self.force.fill(Vec3::ZERO);
+                self.torque.fill(Vec3::ZERO);
+                return Err(StepError::from_list(error, self.list.checked().pairs()));
+            }
+        };
         self.records_current = keep_records;
-        let (saved_pairs, saved_walls) = self.saved_states[..contacts].split_at(count);
-        if !commit {
-            self.pair_states[..count].copy_from_slice(saved_pairs);
-            self.wall_states.copy_from_slice(saved_walls);
+        if commit {
+            self.flip();
         }
         let mut stats = StepStats {
             pair_contacts: list_stats.pair_contacts,

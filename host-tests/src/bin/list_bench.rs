@@ -16,7 +16,7 @@ use std::time::Instant;
 
 use host_tests::random::Xorshift;
 use soft_sphere::{
-    Backup, CheckedPairs, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial,
+    CheckedPairs, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial,
     LinearMixing, LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays,
     SpringDisplacement, Std, TimeStep, Vec3,
 };
@@ -137,10 +137,10 @@ fn one_at_a_time(
     touching
 }
 
+/// An engine's double-buffered states: read from `states`, written into `next`, swapped.
 struct Seam {
     states: Vec<SpringDisplacement<f64>>,
-    saved_states: Vec<SpringDisplacement<f64>>,
-    saved_loads: Vec<Vec3<f64>>,
+    next: Vec<SpringDisplacement<f64>>,
 }
 
 impl Seam {
@@ -154,22 +154,22 @@ impl Seam {
     ) -> usize {
         let list = ContactList {
             pairs: CheckedPairs::new(pairs, &[], spheres.position.len()).unwrap(),
-            pair_states: &mut self.states,
+            pair_states: &self.states,
             walls: &[],
-            wall_states: &mut [],
+            wall_states: &[],
         };
         let out = ListOutput {
             force,
             torque,
-            backup: Backup {
-                states: &mut self.saved_states,
-                loads: &mut self.saved_loads,
-            },
+            next_pair_states: &mut self.next,
+            next_wall_states: &mut [],
             records: None,
         };
-        table
-            .evaluate(time_step, spheres, list, out)
-            .map_or(0, |stats| stats.pair_contacts)
+        let Ok(stats) = table.evaluate(time_step, spheres, list, out) else {
+            return 0;
+        };
+        std::mem::swap(&mut self.states, &mut self.next);
+        stats.pair_contacts
     }
 }
 
@@ -228,8 +228,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         let fresh = || vec![SpringDisplacement::default(); pairs.len()];
         let seam = || Seam {
             states: fresh(),
-            saved_states: fresh(),
-            saved_loads: vec![Vec3::ZERO; 2 * n],
+            next: fresh(),
         };
         let (mut single_states, mut scalar) = (fresh(), seam());
         // Bits first: a few steps from the same states.
@@ -333,8 +332,7 @@ fn phases(
     let pairs = &packing.pairs;
     let mut seam = Seam {
         states: vec![SpringDisplacement::default(); pairs.len()],
-        saved_states: vec![SpringDisplacement::default(); pairs.len()],
-        saved_loads: vec![Vec3::ZERO; 2 * n],
+        next: vec![SpringDisplacement::default(); pairs.len()],
     };
     let (mut force, mut torque) = (vec![Vec3::ZERO; n], vec![Vec3::ZERO; n]);
     let mut times = [Vec::new(), Vec::new(), Vec::new()];
