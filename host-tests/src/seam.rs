@@ -9,8 +9,8 @@ use soft_sphere::{
 
 /// One [`MaterialTable::evaluate`] of `pairs` and `walls`: on success `states` and
 /// `wall_states` hold the next states (the second buffer copied over them, as an engine swaps
-/// its two) and `force` and `torque` each sphere's contact load (whatever they held before); on an error `states` and
-/// `wall_states` are as they were.
+/// its two) and `force` and `torque` each sphere's contact load (whatever they held before); on
+/// an error `states` and `wall_states` are as they were.
 ///
 /// # Errors
 /// The seam's.

@@ -1352,6 +1352,37 @@ fn evaluate_on<E: Executor>(
     (result, force, torque, text)
 }
 
+/// A list long enough that a stretch cut short of whole chunks (a few pairs more than one chunk)
+/// would need more stretches than the executor's 64 pieces is spread whole: every pair
+/// evaluated once, the one-thread bits.
+#[test]
+fn a_long_list_spread_over_threads_evaluates_every_pair() {
+    let t = table();
+    let m = Mixture::new(2400, 17);
+    assert!(
+        m.pairs.len() > 64 * 4 * 256 / 4 + 4 * 256,
+        "{} pairs",
+        m.pairs.len()
+    );
+    let dt = t
+        .coarse_time_step(1.0e-6, &m.arrays(), &[])
+        .unwrap()
+        .tolerating_unstable_contacts();
+    let pool = Threads::new(2).unwrap();
+    let mut loads = vec![PairLoad::default(); m.pairs.len()];
+    let (mut one, mut spread) = (vec![State::default(); m.pairs.len()], Vec::new());
+    spread.clone_from(&one);
+    let pairs = (&m, &m.pairs[..], &[][..]);
+    let (serial, _, _, serial_text) =
+        evaluate_on(&t, (&Serial, &mut []), pairs, dt, (&mut one, &mut []));
+    let (threaded, _, _, threaded_text) =
+        evaluate_on(&t, (&pool, &mut loads), pairs, dt, (&mut spread, &mut []));
+    assert!(serial.unwrap().pair_contacts > 1000);
+    assert_eq!(threaded, serial);
+    assert_eq!(threaded_text, serial_text);
+    assert_eq!(bits(&spread), bits(&one));
+}
+
 /// The pairs spread over 1, 2 and 3 threads (stretches of the list each with its own states
 /// and loads, summed in list order after) give the one-thread bits step after step: forces,
 /// torques, states, records and statistics, tolerated unstable contacts counted once; a refusal

@@ -6,9 +6,10 @@
 //! pair of materials' law, reads the states the last step left and writes the next ones into a
 //! second buffer (double buffering: the engine swaps the two when the call succeeds), and
 //! writes each sphere's contact force and torque. The states it reads are borrowed shared, so
-//! on an error they are as they were, and the error says which sphere, pair or wall and why. The step is checked against
-//! the spheres present ([`MaterialTable::time_step`]): every pair of materials present at the
-//! smallest effective mass its spheres give, and every wall's material.
+//! on an error they are as they were, and the error says which sphere, pair or wall and why.
+//! The step is checked against the spheres present ([`MaterialTable::time_step`]): every pair
+//! of materials present at the smallest effective mass its spheres give, and every wall's
+//! material.
 
 use crate::body::{Sphere, effective_mass};
 use crate::checked::CheckedSphere;

@@ -14,8 +14,8 @@ pub struct BufferSizes {
     /// The length of [`SceneBuffers::pairs`]: the Verlet list's capacity (about 4.5 per sphere in a dense
     /// monodisperse packing with a skin of a tenth of a diameter).
     pub pairs: usize,
-    /// The length of [`SceneBuffers::vectors`]: one per list place (its periodic shift) and three per
-    /// sphere (force, torque, position at the last list build).
+    /// The length of [`SceneBuffers::vectors`]: one per list place (its periodic shift) and
+    /// three per sphere (force, torque, position at the last list build).
     pub vectors: usize,
     /// The length of [`SceneBuffers::states`]: twice (the states a step reads, and the buffer it
     /// writes the next ones into) one per list place and one per sphere and wall.
