@@ -30,7 +30,6 @@ impl<L: Law, W, const K: usize> Drop for Scene<'_, L, W, K> {
 // The owned scene makes the buffers (the `alloc` feature, which the workspace's tests enable).
 #[cfg(all(test, feature = "alloc"))]
 mod tests {
-    use alloc::vec::Vec;
     use soft_sphere::{
         ContactLaw, LinearSpringDashpot, MaterialTable, ModelAA, Sphere, TangentialParameters, Vec3,
     };
@@ -61,15 +60,15 @@ mod tests {
             seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
-        let mut spheres = Vec::new();
-        for k in 0..81 {
+        let spheres: [Sphere<f64>; 81] = core::array::from_fn(|k| {
             let at = Vec3::new((k % 9) as f64 + 0.5, (k / 9) as f64 + 0.5, 0.0) * (side / 9.0);
             let mut s = Sphere::solid(at + Vec3::new(0.0, 0.0, 0.001), 5.0e-4, 2500.0);
             s.velocity = Vec3::new(unit() - 0.5, unit() - 0.5, 0.0);
             s.angular_velocity = Vec3::new(unit() - 0.5, unit() - 0.5, unit() - 0.5) * 2000.0;
-            spheres.push(s);
-        }
-        let mut scene = OwnedScene::<_, NoWalls>::new(spheres, domain, 1.0e-5, NoWalls).unwrap();
+            s
+        });
+        let mut scene =
+            OwnedScene::<_, NoWalls>::new(spheres.into(), domain, 1.0e-5, NoWalls).unwrap();
         let time_step = scene
             .scene(|s| s.time_step(&table, 5.0e-7))
             .unwrap()
