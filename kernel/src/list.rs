@@ -749,7 +749,7 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize>(
         if size_of::<L::State>() > 0 {
             next.fill(L::State::default());
         }
-        let states = (&mut *next, states);
+        let buffers = (&mut *next, states);
         let shifts = shifts.get(local..local + chunk.len()).unwrap_or(&[]);
         let found = sifts.sift(spheres, (chunk, shifts));
         let mut tally = sink.begin_chunk(first, chunk.len());
@@ -757,7 +757,7 @@ pub(crate) fn evaluate_pairs<L: Law, const MATERIALS: usize>(
             (&mut sifts, found),
             spheres,
             (chunk, shifts),
-            states,
+            buffers,
             bound,
             sink,
             (first, &mut tally),
@@ -814,8 +814,8 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
 }
 
 /// From place `from` on (sphere by sphere, wall by wall), writes the relaxed state of every
-/// contact whose sphere cannot reach its wall by the one-contact path's own test, and returns the first
-/// place whose sphere can. Most spheres are far from every wall: a small loop of its own keeps
+/// contact whose sphere cannot reach its wall by the one-contact path's own test, and returns
+/// the first place whose sphere can. Most spheres are far from every wall: a small loop of its own keeps
 /// their cost to a distance and a store.
 #[inline(never)]
 fn next_reaching<F: Float, S: Default>(
@@ -856,10 +856,9 @@ fn next_reaching<F: Float, S: Default>(
 /// The sifted pairs one at a time by the one-contact path's formulas, their roots taken for
 /// the whole chunk first ([`Law::sifted_roots`]), each touching pair committed
 /// to `sink` as it comes (`first` is the chunk's place in the list); returns the first
-/// refused. The forces and states are tested
-/// for finiteness once for the chunk (a sum of their probes) rather than at every contact;
-/// when that test or a contact fails, [`first_refused`] re-runs the pairs checked to
-/// name the first refused in list order.
+/// refused. The forces and states are tested for finiteness once for the chunk (a sum of their
+/// probes) rather than at every contact; when that test or a contact fails, [`first_refused`]
+/// re-runs the pairs checked to name the first refused in list order.
 #[inline(always)]
 fn one_at_a_time<L: Law, const MATERIALS: usize>(
     (sifts, found): (&mut Sifts<L::Float>, usize),

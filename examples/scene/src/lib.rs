@@ -317,8 +317,8 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
         let anchor = per_sphere;
         let (current, next) = b.states.split_at_mut(list + n * W::COUNT);
         let (pair_states, wall_states) = current.split_at_mut(list);
-        // Written in full before it is read, but kept relaxed past the list as the front is.
-        next.fill(relaxed);
+        // Nothing to clear: the seam writes the second buffer in full up to the list's length,
+        // and the first build relaxes both buffers past it (`rebuild_list`).
         let (next_pair_states, next_wall_states) = next.split_at_mut(list);
         // The shifts were cut to the pairs' length.
         let verlet = PairList::new(b.pairs, shifts).map_err(|_| SceneError::BufferLength)?;

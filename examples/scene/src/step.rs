@@ -296,11 +296,11 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
         } else {
             &mut self.loads[..count]
         };
-        let list_stats =
+        let outcome =
             input
                 .table
                 .evaluate_on((executor, loads), input.time_step, &spheres, list, out);
-        let list_stats = match list_stats {
+        let list_stats = match outcome {
             Ok(stats) => stats,
             Err(error) => {
                 // A refused evaluation leaves no forces of meaning: none, as before any.
