@@ -1352,9 +1352,9 @@ fn evaluate_on<E: Executor>(
     (result, force, torque, text)
 }
 
-/// A list long enough that a stretch cut short of whole chunks (a few pairs more than one chunk)
-/// would need more stretches than the executor's 64 pieces is spread whole: every pair
-/// evaluated once, the one-thread bits.
+/// A list spread over threads is evaluated whole, however long: past about 17,000 pairs,
+/// stretches cut shorter than the list needs would run out of the executor's 64 pieces before
+/// its end. Every pair is evaluated once, to the one-thread bits.
 #[test]
 fn a_long_list_spread_over_threads_evaluates_every_pair() {
     let t = table();
@@ -1370,8 +1370,8 @@ fn a_long_list_spread_over_threads_evaluates_every_pair() {
         .tolerating_unstable_contacts();
     let pool = Threads::new(2).unwrap();
     let mut loads = vec![PairLoad::default(); m.pairs.len()];
-    let (mut one, mut spread) = (vec![State::default(); m.pairs.len()], Vec::new());
-    spread.clone_from(&one);
+    let mut one = vec![State::default(); m.pairs.len()];
+    let mut spread = one.clone();
     let pairs = (&m, &m.pairs[..], &[][..]);
     let (serial, _, _, serial_text) =
         evaluate_on(&t, (&Serial, &mut []), pairs, dt, (&mut one, &mut []));

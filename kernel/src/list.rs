@@ -815,8 +815,8 @@ fn evaluate_walls<L: Law, const MATERIALS: usize>(
 
 /// From place `from` on (sphere by sphere, wall by wall), writes the relaxed state of every
 /// contact whose sphere cannot reach its wall by the one-contact path's own test, and returns
-/// the first place whose sphere can. Most spheres are far from every wall: a small loop of its own keeps
-/// their cost to a distance and a store.
+/// the first place whose sphere can. Most spheres are far from every wall: a small loop of its
+/// own keeps their cost to a distance and a store.
 #[inline(never)]
 fn next_reaching<F: Float, S: Default>(
     spheres: &impl Spheres<F>,
