@@ -105,6 +105,12 @@
 #define SS_ERR_INACCURATE_TIME_STEP 20
 
 /**
+ * A new contact needs room in a full history store. The entries here keep no history store
+ * of their own, so none returns it; it is the kernel's error, given its own code.
+ */
+#define SS_ERR_HISTORY_FULL 22
+
+/**
  * The stateless (simplified) law: no tangential history is read or written.
  */
 #define SS_MODEL_STATELESS 0

@@ -40,6 +40,9 @@ pub const SS_ERR_PAST_STABLE_STEP: i32 = 15;
 /// The time step is stable but at or past the law's accuracy limit: a contact could rebound
 /// more than 0.02 of its impact speed off the law's restitution.
 pub const SS_ERR_INACCURATE_TIME_STEP: i32 = 20;
+/// A new contact needs room in a full history store. The entries here keep no history store
+/// of their own, so none returns it; it is the kernel's error, given its own code.
+pub const SS_ERR_HISTORY_FULL: i32 = 22;
 
 // The laws' codes, SS_MODEL_STATELESS to SS_MODEL_HERTZ_MICROSLIP: registry.rs's list.
 /// Breakpoints of `SS_MODEL_HERTZ_MICROSLIP`'s displacement profile.
@@ -140,6 +143,36 @@ pub(crate) fn contact_code(error: ContactError) -> i32 {
         ContactError::NonPositiveMass => SS_ERR_NON_POSITIVE_MASS,
         ContactError::CoincidentCentres => SS_ERR_COINCIDENT_CENTRES,
         ContactError::PastStableStep => SS_ERR_PAST_STABLE_STEP,
-        _ => SS_ERR_NON_FINITE_RESULT,
+        ContactError::NonFiniteResult => SS_ERR_NON_FINITE_RESULT,
+        ContactError::HistoryFull => SS_ERR_HISTORY_FULL,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ss_contact_error_text;
+
+    /// Every error a contact evaluation can return has a code of its own, and a sentence of
+    /// its own: a full history store is not reported as an overflow.
+    #[test]
+    fn each_contact_error_has_its_own_code_and_sentence() {
+        let errors = [
+            ContactError::NonFiniteInput,
+            ContactError::NonPositiveRadius,
+            ContactError::NonPositiveMass,
+            ContactError::CoincidentCentres,
+            ContactError::NonFiniteResult,
+            ContactError::HistoryFull,
+            ContactError::PastStableStep,
+        ];
+        let codes: Vec<i32> = errors.iter().map(|&e| contact_code(e)).collect();
+        // SAFETY: the texts are static, NUL-terminated.
+        let text = |c| unsafe { std::ffi::CStr::from_ptr(ss_contact_error_text(c)) };
+        let rejected = text(-1);
+        for (error, &code) in errors.iter().zip(&codes) {
+            assert_eq!(codes.iter().filter(|&&c| c == code).count(), 1, "{error:?}");
+            assert_ne!(text(code), rejected, "{error:?}");
+        }
     }
 }

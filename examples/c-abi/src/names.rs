@@ -135,6 +135,7 @@ pub extern "C" fn ss_contact_error_text(code: i32) -> *const c_char {
             b"the two centres coincide, or a sphere wider than a cylinder wall is on its axis\0"
         }
         SS_ERR_NON_FINITE_RESULT => b"the contact force overflowed\0",
+        SS_ERR_HISTORY_FULL => b"a new contact found its history store full\0",
         SS_ERR_PAST_STABLE_STEP => {
             b"the contact is stiffer than the time step was checked for (past its accuracy or stability limit: shorten the time step, or for a Hertz law declare a faster impact)\0"
         }

@@ -198,6 +198,7 @@ fn every_parameter_and_error_code_has_its_own_text() {
         SS_ERR_MATERIAL,
         SS_ERR_NOT_PREPARED,
         SS_ERR_REPEATED_PAIR,
+        SS_ERR_HISTORY_FULL,
     ];
     let rejected = text(ss_contact_error_text(-1));
     let texts: Vec<String> = contact_errors
