@@ -26,7 +26,7 @@
 
 use crate::body::Sphere;
 use crate::float::Float;
-use crate::law::ContactForces;
+use crate::forces::ContactForces;
 use crate::tangential::ContactState;
 use crate::vector::Vec3;
 

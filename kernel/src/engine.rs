@@ -4,7 +4,7 @@
 use crate::checked::CheckedSphere;
 use crate::error::{ContactError, ParameterError};
 use crate::float::Float;
-use crate::law::Interaction;
+use crate::forces::Interaction;
 use crate::normal::NormalOscillator;
 use crate::tangential::ContactState;
 use crate::time_step::TimeStep;

@@ -202,22 +202,26 @@ mod engine;
 mod error;
 pub mod executor;
 mod float;
+mod forces;
 #[cfg(feature = "arbitrary")]
 mod fuzz_inputs;
 mod geometry;
 mod law;
 mod laws;
 mod list;
+mod list_error;
 mod material;
 mod mixing;
 pub mod motion;
 mod normal;
 mod pair_check;
+mod pairs;
 pub mod rolling;
 mod rotation;
 mod sifted;
 mod spheres;
 mod spread;
+mod stats;
 mod store;
 #[cfg(feature = "proptest")]
 pub mod strategies;
@@ -236,13 +240,15 @@ pub use engine::{BoundLaw, Law};
 pub use error::{ContactError, Parameter, ParameterError};
 pub use executor::{Executor, Serial};
 pub use float::Float;
+pub use forces::{ContactForces, Interaction};
 pub use geometry::LeverArm;
-pub use law::{ContactForces, ContactLaw, Interaction};
+pub use law::ContactLaw;
 pub use laws::{
     HertzAA, HertzAALuding, HertzFrictionless, HertzMicroSlip, HertzStateless, LinearAA,
     LinearAALuding, LinearFrictionless, LinearStateless,
 };
-pub use list::{ContactList, ListArray, ListError, ListOutput, ListStats, MaterialWall};
+pub use list::{ContactList, ListOutput, MaterialWall};
+pub use list_error::{ListArray, ListError};
 pub use material::Material;
 pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
 pub use normal::{
@@ -254,6 +260,7 @@ pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingMode
 pub use rotation::{NonRotating, Rotating, Rotation};
 pub use spheres::{SphereArrays, SphereSlice, Spheres};
 pub use spread::PairLoad;
+pub use stats::ListStats;
 pub use store::{ContactHistory, ContactKey};
 pub use table::{MaterialTable, TableError};
 pub use tangential::{

@@ -14,7 +14,7 @@
 use core::cmp::Ordering;
 
 use crate::float::Float;
-use crate::list::{ListArray, ListError};
+use crate::list_error::{ListArray, ListError};
 use crate::sifted::shift;
 use crate::vector::{Vec3, all_finite};
 

@@ -5,7 +5,7 @@
 use crate::body::Sphere;
 use crate::checked::{self, CheckedSphere};
 use crate::float::Float;
-use crate::list::{ListArray, ListError};
+use crate::list_error::{ListArray, ListError};
 use crate::vector::Vec3;
 
 pub(crate) mod sealed {

@@ -7,8 +7,10 @@ use core::array;
 use crate::engine::{BoundLaw, Law};
 use crate::executor::{Executor, MAX_PIECES, piece_length};
 use crate::float::Float;
-use crate::law::{ContactForces, Interaction};
-use crate::list::{Commit, ListError, SIFT, Sink, Tally, evaluate_pairs};
+use crate::forces::{ContactForces, Interaction};
+use crate::list_error::ListError;
+use crate::pairs::{Commit, Sink, Tally, evaluate_pairs};
+use crate::sifted::SIFT;
 use crate::spheres::Spheres;
 use crate::vector::Vec3;
 

@@ -4,7 +4,7 @@
 use heapless::index_map::FnvIndexMap;
 
 use crate::error::ContactError;
-use crate::law::Interaction;
+use crate::forces::Interaction;
 use crate::tangential::ContactState;
 
 /// Identifies one contact: the caller's indices of body i and body j, in the order the contact is

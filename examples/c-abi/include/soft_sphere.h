@@ -1580,6 +1580,20 @@ int32_t ss_effective_moduli_f32(const ss_material_f32 *i,
                                 float *effective_shear_modulus);
 
 /**
+ * Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
+ * index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
+ * and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
+ * so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
+ * once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
+ * `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
+ * repeated pair's two).
+ *
+ * # Safety
+ * `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
+ */
+int32_t ss_check_neighbours(size_t atoms, const ss_neighbours *list, ss_list_report *report);
+
+/**
  * The library's version, `"MAJOR.MINOR.PATCH"` (NUL-terminated, static): the crate's version,
  * which the header's `SS_VERSION_*` macros also hold, so that a host can check at run time
  * that the library it loaded is the one its header describes (`docs/c-abi.md`, "Versions").
@@ -1634,20 +1648,6 @@ const char *ss_parameter_error_text(int32_t code);
  * What a contact or list error code means, as a sentence.
  */
 const char *ss_contact_error_text(int32_t code);
-
-/**
- * Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
- * index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
- * and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
- * so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
- * once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
- * `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
- * repeated pair's two).
- *
- * # Safety
- * `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
- */
-int32_t ss_check_neighbours(size_t atoms, const ss_neighbours *list, ss_list_report *report);
 
 /**
  * Validates `*params` and writes a new law handle to `*out` (free it with the matching

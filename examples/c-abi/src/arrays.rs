@@ -1,7 +1,8 @@
 //! Many pairs per call over a host's arrays (structure of arrays): the arrays, their
 //! reading and writing, and the pairs through the kernel one at a time.
 
-use crate::registry::{AnyBound, Real};
+use crate::real::Real;
+use crate::registry::AnyBound;
 use soft_sphere::{BoundLaw, CheckedSphere, Float, Law, Sphere, Vec3};
 
 use crate::*;

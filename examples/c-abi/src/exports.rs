@@ -215,10 +215,10 @@ macro_rules! entry_points {
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_new(
             config: *const table::ss_table_config<$real>,
-            out: *mut *mut table::ss_table<$real>,
+            out: *mut *mut any_table::ss_table<$real>,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_new(config, out) }
+            unsafe { any_table::table_new(config, out) }
         }
 
         /// Frees a table (null is ignored).
@@ -226,9 +226,9 @@ macro_rules! entry_points {
         /// # Safety
         /// `table` must come from the matching constructor and not be used afterwards.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn $table_free(table: *mut table::ss_table<$real>) {
+        pub unsafe extern "C" fn $table_free(table: *mut any_table::ss_table<$real>) {
             // SAFETY: forwarded contract.
-            unsafe { table::table_free(table) }
+            unsafe { any_table::table_free(table) }
         }
 
         /// Gives materials `a` and `b` their coefficients. `a == b`: material `a`'s own, which
@@ -243,14 +243,14 @@ macro_rules! entry_points {
         /// All pointers must be valid or null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_set(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             a: usize,
             b: usize,
             coefficients: *const table::ss_coefficients<$real>,
             parameter: *mut i32,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_set(table, a, b, coefficients, parameter) }
+            unsafe { any_table::table_set(table, a, b, coefficients, parameter) }
         }
 
         /// Makes every pair's law and checks `time_step` against the law of every pair of
@@ -266,13 +266,13 @@ macro_rules! entry_points {
         /// `lightest_mass` must hold one number per material; the others be valid or null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_prepare(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             time_step: $real,
             lightest_mass: *const $real,
             report: *mut table::ss_table_report<$real>,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_prepare(table, (time_step, false), lightest_mass, report) }
+            unsafe { any_table::table_prepare(table, (time_step, false), lightest_mass, report) }
         }
 
         /// The materials the walls a host evaluates (`ss_table_evaluate_walls_*`) are made of,
@@ -287,12 +287,12 @@ macro_rules! entry_points {
         /// valid or null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_set_walls(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             materials: *const u32,
             count: usize,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_set_walls(table, materials, count) }
+            unsafe { any_table::table_set_walls(table, materials, count) }
         }
 
         /// The pairs of materials the table evaluates, `count` pairs of ids in `pairs` (`a, b`
@@ -310,12 +310,12 @@ macro_rules! entry_points {
         /// or null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_set_pairs(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             pairs: *const u32,
             count: usize,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_set_pairs(table, pairs, count) }
+            unsafe { any_table::table_set_pairs(table, pairs, count) }
         }
 
         /// As `ss_table_prepare_*`, for a step taken knowingly past the accuracy limit: a step
@@ -327,13 +327,13 @@ macro_rules! entry_points {
         /// As `ss_table_prepare_*`.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_prepare_coarse(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             time_step: $real,
             lightest_mass: *const $real,
             report: *mut table::ss_table_report<$real>,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_prepare(table, (time_step, true), lightest_mass, report) }
+            unsafe { any_table::table_prepare(table, (time_step, true), lightest_mass, report) }
         }
 
         /// The whole neighbour list in one call: every pair `(i, j)` with the law of their
@@ -356,7 +356,7 @@ macro_rules! entry_points {
         /// history) must not overlap each other or the inputs.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_evaluate(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             atoms: *const table::ss_atoms<$real>,
             neighbours: *const table::ss_neighbours,
             history: *const table::ss_history<$real>,
@@ -366,7 +366,7 @@ macro_rules! entry_points {
         ) -> i32 {
             // SAFETY: forwarded contract.
             unsafe {
-                table::table_evaluate(table, atoms, neighbours, history, loads, advance, report)
+                any_table::table_evaluate(table, atoms, neighbours, history, loads, advance, report)
             }
         }
 
@@ -386,7 +386,7 @@ macro_rules! entry_points {
         /// written arrays must not overlap each other or the inputs.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_walls(
-            table: *mut table::ss_table<$real>,
+            table: *mut any_table::ss_table<$real>,
             atoms: *const table::ss_atoms<$real>,
             walls: *const table::ss_walls<$real>,
             loads: *const table::ss_loads<$real>,
@@ -394,7 +394,7 @@ macro_rules! entry_points {
             report: *mut table::ss_list_report,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_evaluate_walls(table, atoms, walls, loads, advance, report) }
+            unsafe { any_table::table_evaluate_walls(table, atoms, walls, loads, advance, report) }
         }
 
         /// One pair's contact with the law of materials `a` and `b`, its state read from
@@ -405,7 +405,7 @@ macro_rules! entry_points {
         /// All pointers must be valid or null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_pair(
-            table: *const table::ss_table<$real>,
+            table: *const any_table::ss_table<$real>,
             a: usize,
             b: usize,
             i: *const ss_sphere<$real>,
@@ -414,7 +414,7 @@ macro_rules! entry_points {
             out: *mut ss_forces<$real>,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_pair(table, a, b, (i, j), values, out) }
+            unsafe { any_table::table_pair(table, a, b, (i, j), values, out) }
         }
 
         /// How many numbers the table's law keeps per contact (0 for the stateless and
@@ -424,8 +424,8 @@ macro_rules! entry_points {
         /// # Safety
         /// `table` must be valid or null.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn $table_values(table: *const table::ss_table<$real>) -> usize {
-            table::state_values(table)
+        pub unsafe extern "C" fn $table_values(table: *const any_table::ss_table<$real>) -> usize {
+            any_table::state_values(table)
         }
 
         /// Writes to `target` the state `source` seen from the other body (the pair's i and j
@@ -436,12 +436,12 @@ macro_rules! entry_points {
         /// `source` and `target` must hold `ss_table_state_values_*` numbers, or be null.
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $table_mirror(
-            table: *const table::ss_table<$real>,
+            table: *const any_table::ss_table<$real>,
             source: *const $real,
             target: *mut $real,
         ) -> i32 {
             // SAFETY: forwarded contract.
-            unsafe { table::table_mirror(table, source, target) }
+            unsafe { any_table::table_mirror(table, source, target) }
         }
     };
 }

@@ -29,16 +29,19 @@
 mod registry;
 #[macro_use]
 mod exports;
+mod any_table;
 mod arrays;
 mod codes;
 mod list;
 mod names;
+mod real;
 mod state;
 pub mod table;
 mod types;
 
 pub use arrays::*;
 pub use codes::*;
+pub use real::Real;
 pub use registry::*; // the laws' SS_MODEL_* codes
 pub use types::*;
 
@@ -47,11 +50,11 @@ pub use names::{
     ss_model_of_name, ss_parameter_error_text, ss_parameter_name, ss_version,
 };
 
+pub use any_table::{ss_check_neighbours, ss_table};
 pub use table::{
     SS_ERR_INDEX, SS_ERR_LENGTH, SS_ERR_MATERIAL, SS_ERR_NOT_PREPARED, SS_ERR_REPEATED_PAIR,
-    SS_MATERIALS_MAX, SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_check_neighbours,
-    ss_coefficients, ss_history, ss_list_report, ss_loads, ss_neighbours, ss_table,
-    ss_table_config, ss_table_report, ss_walls,
+    SS_MATERIALS_MAX, SS_ROLLING_EPSD, SS_ROLLING_NONE, ss_atoms, ss_coefficients, ss_history,
+    ss_list_report, ss_loads, ss_neighbours, ss_table_config, ss_table_report, ss_walls,
 };
 
 use registry::{AnyBound, AnyLaw, Family, family};

@@ -12,7 +12,7 @@ use crate::{
     forces_of, ss_forces, ss_sphere,
 };
 
-use crate::registry::Real;
+use crate::real::Real;
 use crate::table::*;
 
 /// A null pointer is refused only when there is something to read through it.

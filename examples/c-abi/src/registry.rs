@@ -9,12 +9,12 @@
 //! `ss_state`).
 
 use soft_sphere::{
-    BoundLaw, ContactLaw, Float, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
-    LinearSpringDashpot, MathBackend, MindlinAA, MindlinAALuding, MindlinParameters,
-    MindlinStateless, ModelAA, ModelAALuding, ParameterError, Stateless, Std, TangentialParameters,
-    TimeStep,
+    BoundLaw, ContactLaw, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
+    LinearSpringDashpot, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelAA,
+    ModelAALuding, ParameterError, Stateless, TangentialParameters, TimeStep,
 };
 
+use crate::real::Real;
 use crate::ss_params;
 use crate::table::{MicroSlipMixing, Rolled, Tabled, elastic, elastic_frictionless, linear};
 use crate::table::{linear_frictionless, rolled_elastic, rolled_linear};
@@ -61,23 +61,6 @@ macro_rules! with_laws {
     };
 }
 
-/// The precisions the C ABI offers, each with the math backend its laws take: `Std`, whose
-/// square root gives libm's bits and is one the compiler widens and keeps in vector registers
-/// (in an AVX build libm's, an SSE instruction in inline assembly, costs a switch of register
-/// state at every root).
-pub trait Real: Float {
-    /// The laws' math backend.
-    type Backend: MathBackend<Self>;
-}
-
-impl Real for f32 {
-    type Backend = Std;
-}
-
-impl Real for f64 {
-    type Backend = Std;
-}
-
 /// Each family's law and mixing rule for a tangential slot `T`, named by the family.
 mod family {
     /// The linear spring-dashpot.
@@ -87,24 +70,20 @@ mod family {
             F,
             soft_sphere::LinearSpringDashpot<F>,
             T,
-            <F as super::super::Real>::Backend,
+            <F as crate::real::Real>::Backend,
         >;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
-            soft_sphere::LinearMixing<F, T, <F as super::super::Real>::Backend>;
+            soft_sphere::LinearMixing<F, T, <F as crate::real::Real>::Backend>;
     }
     /// Hertz.
     pub(crate) mod hertz {
         /// The law.
-        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<
-            F,
-            soft_sphere::Hertz<F>,
-            T,
-            <F as super::super::Real>::Backend,
-        >;
+        pub(crate) type Law<F, T> =
+            soft_sphere::ContactLaw<F, soft_sphere::Hertz<F>, T, <F as crate::real::Real>::Backend>;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
-            soft_sphere::HertzMixing<F, T, <F as super::super::Real>::Backend>;
+            soft_sphere::HertzMixing<F, T, <F as crate::real::Real>::Backend>;
     }
 }
 

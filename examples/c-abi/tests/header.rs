@@ -104,7 +104,16 @@ fn header_is_current() {
     // One file: the modules' declarations and re-exports dropped, their paths made local. The
     // registry holds no C item (and its macro input is not Rust cbindgen parses).
     let modules = [
-        "arrays", "codes", "exports", "list", "names", "state", "table", "types",
+        "any_table",
+        "arrays",
+        "codes",
+        "exports",
+        "list",
+        "names",
+        "real",
+        "state",
+        "table",
+        "types",
     ];
     let mut root = root
         .replace("#[macro_use]\nmod registry;", "")
@@ -116,6 +125,13 @@ fn header_is_current() {
             .replace(&format!("mod {module};\n"), "")
             .replace(&format!("pub use {module}::*;\n"), "")
             .replace(&format!("use {module}::*;\n"), "");
+        // A single item re-exported: `pub use module::Item;`.
+        while let Some((before, after)) = root.split_once(&format!("pub use {module}::")) {
+            if after.starts_with('{') {
+                break;
+            }
+            root = format!("{before}{}", after.split_once(";\n").unwrap().1);
+        }
         if let Some((before, after)) = root.split_once(&format!("pub use {module}::{{")) {
             root = format!("{before}{}", after.split_once("};").unwrap().1);
         }
@@ -146,7 +162,8 @@ fn header_is_current() {
             text = after.split_once(';').expect("the use's end").1;
         }
         kept.push_str(text);
-        source = format!("{source}\n{}", kept.replace("table::", ""));
+        let local = kept.replace("any_table::", "").replace("table::", "");
+        source = format!("{source}\n{local}");
     }
     let scratch = std::env::temp_dir().join(format!("soft_sphere_ffi_{}.rs", std::process::id()));
     std::fs::write(&scratch, expanded(&source)).unwrap();

@@ -1,0 +1,289 @@
+//! The import graph of the kernel and the C ABI: which top-level module names which
+//! (directly, `crate::module::...`, or through the crate root's re-exports, `crate::Name` and
+//! `use crate::*`), with no cycle, so that each module can be read, tested and moved after the
+//! ones it builds on.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// Module name to the modules it names.
+type Graph = BTreeMap<String, BTreeSet<String>>;
+
+/// The source without comments, and without its tests (from the first `#[cfg(test)]` on).
+fn code(path: &Path) -> String {
+    let text = fs::read_to_string(path).unwrap();
+    let mut out = String::new();
+    for line in text.lines() {
+        let line = line.split("//").next().unwrap_or("");
+        out.push_str(line);
+        out.push('\n');
+    }
+    match out.find("#[cfg(test)]") {
+        Some(at) => out[..at].to_string(),
+        None => out,
+    }
+}
+
+/// Identifiers and the punctuation the scan needs (`::`, `{`, `}`, `,`, `*`, `;`, `.`).
+fn tokens(code: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let chars: Vec<char> = code.chars().collect();
+    let mut k = 0;
+    while k < chars.len() {
+        let c = chars[k];
+        if c.is_alphanumeric() || c == '_' {
+            let start = k;
+            while k < chars.len() && (chars[k].is_alphanumeric() || chars[k] == '_') {
+                k += 1;
+            }
+            out.push(chars[start..k].iter().collect());
+            continue;
+        }
+        if c == ':' && chars.get(k + 1) == Some(&':') {
+            out.push("::".into());
+            k += 2;
+            continue;
+        }
+        if "{},*;.".contains(c) {
+            out.push(c.to_string());
+        }
+        k += 1;
+    }
+    out
+}
+
+/// Each top-level module of `src` and the files it is made of.
+fn modules(src: &Path) -> BTreeMap<String, Vec<PathBuf>> {
+    let mut out = BTreeMap::new();
+    for entry in fs::read_dir(src).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        if path.is_dir() {
+            let mut files = Vec::new();
+            let mut stack = vec![path];
+            while let Some(dir) = stack.pop() {
+                for entry in fs::read_dir(dir).unwrap() {
+                    let p = entry.unwrap().path();
+                    if p.is_dir() {
+                        stack.push(p);
+                    } else if p.extension().is_some_and(|e| e == "rs") {
+                        files.push(p);
+                    }
+                }
+            }
+            out.insert(name, files);
+        } else if path.extension().is_some_and(|e| e == "rs") && name != "lib" {
+            out.insert(name, vec![path]);
+        }
+    }
+    out
+}
+
+/// The items a module defines at its top level (or in the macros that make them): types,
+/// traits and constants at any indentation, functions at the start of a line.
+fn defined(files: &[PathBuf]) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for file in files {
+        for line in code(file).lines() {
+            let trimmed = line.trim_start();
+            let Some(rest) = trimmed.strip_prefix("pub") else {
+                continue;
+            };
+            let rest = rest.strip_prefix("(crate)").unwrap_or(rest).trim_start();
+            let words: Vec<&str> = rest.split_whitespace().collect();
+            let at_start = trimmed.len() == line.len();
+            let name = match words.as_slice() {
+                ["const" | "struct" | "enum" | "trait" | "type", name, ..] => name,
+                ["fn", name, ..] if at_start => name,
+                ["unsafe", "fn", name, ..] if at_start => name,
+                ["unsafe", "extern", _, "fn", name, ..] if at_start => name,
+                ["extern", _, "fn", name, ..] if at_start => name,
+                _ => continue,
+            };
+            let name: String = name
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            out.insert(name);
+        }
+    }
+    out
+}
+
+/// What the crate root makes of each name: the module it comes from (`use m::{..}` and
+/// `use m::*`, public or not).
+fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<String, String> {
+    let t = tokens(&code(&src.join("lib.rs")));
+    let mut out = BTreeMap::new();
+    for k in 0..t.len() {
+        if t[k] != "use" || k + 3 >= t.len() || !modules.contains_key(&t[k + 1]) {
+            continue;
+        }
+        let module = &t[k + 1];
+        if t[k + 2] != "::" {
+            continue;
+        }
+        match t[k + 3].as_str() {
+            "*" => {
+                for name in defined(&modules[module]) {
+                    out.entry(name).or_insert_with(|| module.clone());
+                }
+            }
+            "{" => {
+                for token in t[k + 4..].iter().take_while(|x| *x != "}") {
+                    if token.chars().all(|c| c.is_alphanumeric() || c == '_') {
+                        out.insert(token.clone(), module.clone());
+                    }
+                }
+            }
+            name => {
+                out.insert(name.to_string(), module.clone());
+            }
+        }
+    }
+    out
+}
+
+/// The import graph of the crate at `src`.
+fn graph(src: &Path) -> Graph {
+    let modules = modules(src);
+    let names = root_names(src, &modules);
+    let mut out = Graph::new();
+    for (module, files) in &modules {
+        let own = defined(files);
+        let mut deps = BTreeSet::new();
+        let add = |name: &str, deps: &mut BTreeSet<String>| {
+            if modules.contains_key(name) {
+                deps.insert(name.to_string());
+            } else if let Some(m) = names.get(name).filter(|_| !own.contains(name)) {
+                deps.insert(m.clone());
+            }
+        };
+        for file in files {
+            let t = tokens(&code(file));
+            for k in 0..t.len().saturating_sub(2) {
+                if t[k] != "crate" || t[k + 1] != "::" {
+                    continue;
+                }
+                match t[k + 2].as_str() {
+                    "*" => {
+                        // Every name the file uses of the root's, but a method (`.name`), a
+                        // path's later segment (`Flat::read`) or a function the file defines
+                        // itself (`fn name`).
+                        for (j, token) in t.iter().enumerate() {
+                            let before = j.checked_sub(1).map(|b| t[b].as_str());
+                            if names.contains_key(token)
+                                && !matches!(before, Some("." | "fn" | "::"))
+                            {
+                                add(token, &mut deps);
+                            }
+                        }
+                    }
+                    "{" => {
+                        let mut depth = 0;
+                        for token in &t[k + 2..] {
+                            match token.as_str() {
+                                "{" => depth += 1,
+                                "}" => {
+                                    depth -= 1;
+                                    if depth == 0 {
+                                        break;
+                                    }
+                                }
+                                _ => add(token, &mut deps),
+                            }
+                        }
+                    }
+                    name => add(name, &mut deps),
+                }
+            }
+        }
+        deps.remove(module);
+        out.insert(module.clone(), deps);
+    }
+    out
+}
+
+/// A cycle of the graph, if there is one (a path that comes back to its start).
+fn cycle(graph: &Graph) -> Option<Vec<String>> {
+    // Depth-first, colouring each module: on the current path (1) or finished (2).
+    fn visit(
+        graph: &Graph,
+        module: &str,
+        colour: &mut BTreeMap<String, u8>,
+        path: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        colour.insert(module.to_string(), 1);
+        path.push(module.to_string());
+        for next in graph.get(module).into_iter().flatten() {
+            match colour.get(next).copied().unwrap_or(0) {
+                1 => {
+                    let from = path.iter().position(|m| m == next).unwrap();
+                    let mut found = path[from..].to_vec();
+                    found.push(next.clone());
+                    return Some(found);
+                }
+                0 => {
+                    if let Some(found) = visit(graph, next, colour, path) {
+                        return Some(found);
+                    }
+                }
+                _ => {}
+            }
+        }
+        path.pop();
+        colour.insert(module.to_string(), 2);
+        None
+    }
+    let mut colour = BTreeMap::new();
+    for module in graph.keys() {
+        if colour.get(module).copied().unwrap_or(0) == 0 {
+            let mut path = Vec::new();
+            if let Some(found) = visit(graph, module, &mut colour, &mut path) {
+                return Some(found);
+            }
+        }
+    }
+    None
+}
+
+fn crate_src(relative: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join(relative)
+}
+
+#[test]
+fn the_kernel_and_the_c_abi_have_no_module_cycle() {
+    for src in ["kernel/src", "examples/c-abi/src"] {
+        let graph = graph(&crate_src(src));
+        let edges: usize = graph.values().map(BTreeSet::len).sum();
+        assert!(graph.len() > 8 && edges > 10, "{src}: {graph:?}");
+        assert_eq!(cycle(&graph), None, "{src}");
+    }
+}
+
+/// The scan sees each way a module names another, and the search finds a cycle made of them.
+#[test]
+fn the_scan_sees_each_way_of_naming_and_the_search_finds_a_cycle() {
+    let graph = graph(&crate_src("kernel/src"));
+    let names = |m: &str| graph[m].iter().cloned().collect::<Vec<_>>();
+    // `use crate::engine::{BoundLaw, Law}` (a module path) and `crate::forces::...`.
+    assert!(names("law").contains(&"engine".to_string()));
+    assert!(names("law").contains(&"forces".to_string()));
+    // `[`crate::Frictionless`]` in a comment is not an import.
+    let mut looped = graph.clone();
+    looped.get_mut("forces").unwrap().insert("law".to_string());
+    let found = cycle(&looped).expect("forces -> law -> forces");
+    assert_eq!(found.first(), found.last());
+    assert!(found.contains(&"forces".to_string()) && found.contains(&"law".to_string()));
+    // Through the root: the C ABI's `use crate::*` modules name what they use of it.
+    let abi = graph_of("examples/c-abi/src");
+    assert!(abi["list"].contains("table"), "{:?}", abi["list"]);
+    assert!(abi["any_table"].contains("registry"));
+}
+
+fn graph_of(src: &str) -> Graph {
+    graph(&crate_src(src))
+}
