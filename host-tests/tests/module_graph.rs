@@ -10,7 +10,8 @@ use std::path::{Path, PathBuf};
 /// Module name to the modules it names.
 type Graph = BTreeMap<String, BTreeSet<String>>;
 
-/// The source without comments, and without its tests (from the first `#[cfg(test)]` on).
+/// The source without comments, and without its unit tests (a `#[cfg(test)]` module, which
+/// may name what it likes).
 fn code(path: &Path) -> String {
     let text = fs::read_to_string(path).unwrap();
     let mut out = String::new();
@@ -19,7 +20,7 @@ fn code(path: &Path) -> String {
         out.push_str(line);
         out.push('\n');
     }
-    match out.find("#[cfg(test)]") {
+    match out.find("#[cfg(test)]\nmod ") {
         Some(at) => out[..at].to_string(),
         None => out,
     }
@@ -112,10 +113,13 @@ fn defined(files: &[PathBuf]) -> BTreeSet<String> {
 }
 
 /// What the crate root makes of each name: the module it comes from (`use m::{..}` and
-/// `use m::*`, public or not).
+/// `use m::*`, public or not), or `lib` for an item the root defines itself.
 fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<String, String> {
     let t = tokens(&code(&src.join("lib.rs")));
-    let mut out = BTreeMap::new();
+    let mut out: BTreeMap<String, String> = defined(&[src.join("lib.rs")])
+        .into_iter()
+        .map(|name| (name, "lib".to_string()))
+        .collect();
     for k in 0..t.len() {
         if t[k] != "use" || k + 3 >= t.len() || !modules.contains_key(&t[k + 1]) {
             continue;
@@ -145,11 +149,31 @@ fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<
     out
 }
 
-/// The import graph of the crate at `src`.
+/// The import graph of the crate at `src`, its root (`lib`, what `lib.rs` holds besides its
+/// module declarations and imports) among the modules.
 fn graph(src: &Path) -> Graph {
-    let modules = modules(src);
+    let mut modules = modules(src);
     let names = root_names(src, &modules);
+    let root = src.join("lib.rs");
     let mut out = Graph::new();
+    // The root's own code: its statements but the `mod` and `use` ones.
+    let mut own = String::new();
+    for statement in code(&root).split_inclusive(';') {
+        let words = statement.split_whitespace().collect::<Vec<_>>().join(" ");
+        let declaration = ["mod ", "pub mod ", "use ", "pub use ", "#[macro_use] mod "]
+            .iter()
+            .any(|start| words.starts_with(start) || words.contains(&format!("] {start}")));
+        if !declaration {
+            own.push_str(statement);
+        }
+    }
+    // One file per test thread, as the tests run side by side.
+    let thread = format!("{:?}", std::thread::current().id());
+    let thread: String = thread.chars().filter(char::is_ascii_digit).collect();
+    let scratch =
+        std::env::temp_dir().join(format!("module_graph_{}_{thread}.rs", std::process::id()));
+    fs::write(&scratch, own).unwrap();
+    modules.insert("lib".to_string(), vec![scratch.clone()]);
     for (module, files) in &modules {
         let own = defined(files);
         let mut deps = BTreeSet::new();
@@ -162,6 +186,14 @@ fn graph(src: &Path) -> Graph {
         };
         for file in files {
             let t = tokens(&code(file));
+            // A path that starts at a module (`list::check_neighbours`, through `use crate::*`
+            // or the root's own scope).
+            for k in 0..t.len().saturating_sub(1) {
+                let head = k == 0 || t[k - 1] != "::";
+                if head && t[k + 1] == "::" && modules.contains_key(&t[k]) {
+                    add(&t[k], &mut deps);
+                }
+            }
             for k in 0..t.len().saturating_sub(2) {
                 if t[k] != "crate" || t[k + 1] != "::" {
                     continue;
@@ -202,6 +234,7 @@ fn graph(src: &Path) -> Graph {
         deps.remove(module);
         out.insert(module.clone(), deps);
     }
+    let _ = fs::remove_file(&scratch);
     out
 }
 
@@ -272,15 +305,18 @@ fn the_scan_sees_each_way_of_naming_and_the_search_finds_a_cycle() {
     // `use crate::engine::{BoundLaw, Law}` (a module path) and `crate::forces::...`.
     assert!(names("law").contains(&"engine".to_string()));
     assert!(names("law").contains(&"forces".to_string()));
-    // `[`crate::Frictionless`]` in a comment is not an import.
+    // A link to `crate::Frictionless` in a comment is not an import.
+    assert!(!names("forces").contains(&"tangential".to_string()));
     let mut looped = graph.clone();
     looped.get_mut("forces").unwrap().insert("law".to_string());
     let found = cycle(&looped).expect("forces -> law -> forces");
     assert_eq!(found.first(), found.last());
     assert!(found.contains(&"forces".to_string()) && found.contains(&"law".to_string()));
-    // Through the root: the C ABI's `use crate::*` modules name what they use of it.
+    // Through the root: a `use crate::*` module names what it uses of the root's
+    // (`forces_of`, the handles'), and a module path it reaches that way (`list::`).
     let abi = graph_of("examples/c-abi/src");
-    assert!(abi["list"].contains("table"), "{:?}", abi["list"]);
+    assert!(abi["arrays"].contains("handle"), "{:?}", abi["arrays"]);
+    assert!(abi["any_table"].contains("list"), "{:?}", abi["any_table"]);
     assert!(abi["any_table"].contains("registry"));
 }
 

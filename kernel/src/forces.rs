@@ -16,10 +16,10 @@ pub struct ContactForces<F> {
     pub normal_force: F,
     /// Tangential force on j (N); `|tangential_force| <= mu |normal_force|`.
     pub tangential_force: Vec3<F>,
-    /// Slip velocity of the contact point, j relative to i, in the tangent plane (m/s):
-    /// `v_t = v_rel - (v_rel . n) n` with `v_rel = v_j - v_i - (a_i w_i + a_j w_j) x n` (no spin
-    /// term for a [`NonRotating`](crate::NonRotating) law). Zero for a [`Frictionless`](crate::Frictionless) law, which
-    /// does not compute it.
+    /// Slip velocity of the contact point, j relative to i, in the tangent plane (m/s): `v_t =
+    /// v_rel - (v_rel . n) n` with `v_rel = v_j - v_i - (a_i w_i + a_j w_j) x n` (no spin term for
+    /// a [`NonRotating`](crate::NonRotating) law). Zero for a [`Frictionless`](crate::Frictionless)
+    /// law, which does not compute it.
     pub slip_velocity: Vec3<F>,
     /// Torque on i about its centre (N m): `-a_i n x F_t`.
     pub torque_on_i: Vec3<F>,

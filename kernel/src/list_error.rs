@@ -15,9 +15,11 @@ pub enum ListArray {
     Mass,
     /// [`SphereArrays::material`](crate::SphereArrays::material).
     Material,
-    /// A pair list's shifts (none, or one per pair: [`CheckedPairs::new`](crate::CheckedPairs::new)).
+    /// A pair list's shifts (none, or one per pair:
+    /// [`CheckedPairs::new`](crate::CheckedPairs::new)).
     Shifts,
-    /// A pair list's pairs: no more than its buffers hold ([`PairList::rebuild`](crate::PairList::rebuild)).
+    /// A pair list's pairs: no more than its buffers hold
+    /// ([`PairList::rebuild`](crate::PairList::rebuild)).
     Pairs,
     /// [`ContactList::pair_states`](crate::ContactList::pair_states) (one per pair).
     PairStates,
@@ -27,13 +29,16 @@ pub enum ListArray {
     Force,
     /// [`ListOutput::torque`](crate::ListOutput::torque).
     Torque,
-    /// [`ListOutput::records`](crate::ListOutput::records) ([`ListOutput::records_needed`](crate::ListOutput::records_needed)).
+    /// [`ListOutput::records`](crate::ListOutput::records)
+    /// ([`ListOutput::records_needed`](crate::ListOutput::records_needed)).
     Records,
     /// [`ListOutput::next_pair_states`](crate::ListOutput::next_pair_states) (one per pair).
     NextPairStates,
-    /// [`ListOutput::next_wall_states`](crate::ListOutput::next_wall_states) (one per sphere and wall).
+    /// [`ListOutput::next_wall_states`](crate::ListOutput::next_wall_states) (one per sphere and
+    /// wall).
     NextWallStates,
-    /// The per-pair loads of [`MaterialTable::evaluate_on`](crate::MaterialTable::evaluate_on) (none, or one per pair).
+    /// The per-pair loads of [`MaterialTable::evaluate_on`](crate::MaterialTable::evaluate_on)
+    /// (none, or one per pair).
     Loads,
     /// The working memory of [`check_pairs`](crate::check_pairs) (one per pair).
     Order,

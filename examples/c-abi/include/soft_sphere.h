@@ -341,34 +341,6 @@ typedef struct ss_table_f32 ss_table_f32;
 typedef struct ss_table_f64 ss_table_f64;
 
 /**
- * An elastic material, for `ss_effective_moduli_*`.
- */
-typedef struct {
-  /**
-   * Young's modulus (Pa).
-   */
-  double youngs_modulus;
-  /**
-   * Poisson's ratio, in (-1, 0.5].
-   */
-  double poisson_ratio;
-} ss_material_f64;
-
-/**
- * An elastic material, for `ss_effective_moduli_*`.
- */
-typedef struct {
-  /**
-   * Young's modulus (Pa).
-   */
-  float youngs_modulus;
-  /**
-   * Poisson's ratio, in (-1, 0.5].
-   */
-  float poisson_ratio;
-} ss_material_f32;
-
-/**
  * A neighbour list as LAMMPS keeps it: `count` atoms (`atoms[0 .. count)`); atom `i`'s
  * neighbours are `first_neighbour[i][0 .. neighbour_counts[i])`, each masked with
  * `index_mask`. `neighbour_counts` and `first_neighbour` are indexed by atom, so they must hold
@@ -419,6 +391,34 @@ typedef struct {
    */
   size_t inaccurate;
 } ss_list_report;
+
+/**
+ * An elastic material, for `ss_effective_moduli_*`.
+ */
+typedef struct {
+  /**
+   * Young's modulus (Pa).
+   */
+  double youngs_modulus;
+  /**
+   * Poisson's ratio, in (-1, 0.5].
+   */
+  double poisson_ratio;
+} ss_material_f64;
+
+/**
+ * An elastic material, for `ss_effective_moduli_*`.
+ */
+typedef struct {
+  /**
+   * Young's modulus (Pa).
+   */
+  float youngs_modulus;
+  /**
+   * Poisson's ratio, in (-1, 0.5].
+   */
+  float poisson_ratio;
+} ss_material_f32;
 
 /**
  * Law parameters, validated once by the constructor.
@@ -1555,6 +1555,20 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
+ * index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
+ * and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
+ * so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
+ * once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
+ * `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
+ * repeated pair's two).
+ *
+ * # Safety
+ * `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
+ */
+int32_t ss_check_neighbours(size_t atoms, const ss_neighbours *list, ss_list_report *report);
+
+/**
  * Hertz's `E*` and Mindlin's `G*` of a contact between materials `*i` and `*j` (`j` null: a
  * rigid body, such as a wall), for `ss_params_f64`. Returns `SS_OK`, `SS_ERR_NULL`, or the
  * material's error (`SS_ERR_NOT_POSITIVE`, `SS_ERR_NON_FINITE_PARAMETER`,
@@ -1578,20 +1592,6 @@ int32_t ss_effective_moduli_f32(const ss_material_f32 *i,
                                 const ss_material_f32 *j,
                                 float *effective_modulus,
                                 float *effective_shear_modulus);
-
-/**
- * Checks a neighbour list of `atoms` atoms once, when the host builds it: every count and
- * index, and no pair named twice (atom `i`'s neighbours naming `j` twice, or `i`'s naming `j`
- * and `j`'s naming `i`), whose force `ss_table_evaluate_*` would add twice. It takes a sort,
- * so it belongs to the list build, not to every step (LAMMPS's half lists name each pair
- * once). Returns `SS_OK`, `SS_ERR_NULL`, `SS_ERR_LENGTH`, `SS_ERR_INDEX` or
- * `SS_ERR_REPEATED_PAIR`; `*report` (when not null) names the atoms an error is about (the
- * repeated pair's two).
- *
- * # Safety
- * `list` as for `ss_table_evaluate_*`, for `atoms` atoms.
- */
-int32_t ss_check_neighbours(size_t atoms, const ss_neighbours *list, ss_list_report *report);
 
 /**
  * The library's version, `"MAJOR.MINOR.PATCH"` (NUL-terminated, static): the crate's version,

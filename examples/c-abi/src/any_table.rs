@@ -1,5 +1,5 @@
 //! The table a C host holds (`ss_table_*`): one family's table, picked by the configuration's
-//! law and rolling resistance from the registry's list, and the entries that reach it.
+//! law and rolling resistance from the registry's list, and the entry points that reach it.
 
 use soft_sphere::{
     ElasticMaterial, ElasticPlasticRolling, HertzImpact, HertzMixing, Law, Material, MindlinAA,

@@ -1,11 +1,9 @@
-//! The material table and the list entry: every pair of materials' law (given pair by pair, the
-//! rest by the kernel's mixing rules), the time step checked against every pair of materials
-//! present, and a whole neighbour list evaluated in one call over an engine's own arrays, as
-//! LAMMPS keeps them (flat per-atom arrays; a list of atoms, each with a count and a first
-//! neighbour; per-neighbour history values and touch flags). The contacts go through the
-//! kernel's list seam (`MaterialTable::evaluate`), so each gives the bits of one
-//! `ss_sphere_sphere_*` call with its pair's law, and a refused contact leaves every array the
-//! caller gave as it was.
+//! One family's material table: every pair of materials' law (given pair by pair, the rest by
+//! the kernel's mixing rules) and the time step checked against every pair of materials
+//! present; and the C types of the table entry points and of a neighbour list as LAMMPS keeps
+//! it (flat per-atom arrays; a list of atoms, each with a count and a first neighbour;
+//! per-neighbour history values and touch flags), which `list.rs` evaluates through the
+//! kernel's list seam.
 
 use soft_sphere::{
     ContactLaw, ElasticMaterial, ElasticPlasticRolling, HertzImpact, HertzMicroSlip, HertzMixing,

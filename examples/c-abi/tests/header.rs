@@ -108,6 +108,7 @@ fn header_is_current() {
         "arrays",
         "codes",
         "exports",
+        "handle",
         "list",
         "names",
         "real",
