@@ -1,4 +1,4 @@
-//! The import graph of the kernel and the C ABI: which top-level module names which
+//! The import graph of the kernel, the C ABI and the scene: which top-level module names which
 //! (directly, `crate::module::...`, or through the crate root's re-exports, `crate::Name` and
 //! `use crate::*`), with no cycle, so that each module can be read, tested and moved after the
 //! ones it builds on.
@@ -288,8 +288,8 @@ fn crate_src(relative: &str) -> PathBuf {
 }
 
 #[test]
-fn the_kernel_and_the_c_abi_have_no_module_cycle() {
-    for src in ["kernel/src", "examples/c-abi/src"] {
+fn the_kernel_the_c_abi_and_the_scene_have_no_module_cycle() {
+    for src in ["kernel/src", "examples/c-abi/src", "examples/scene/src"] {
         let graph = graph(&crate_src(src));
         let edges: usize = graph.values().map(BTreeSet::len).sum();
         assert!(graph.len() > 8 && edges > 10, "{src}: {graph:?}");

@@ -4,6 +4,8 @@ use core::fmt;
 
 use soft_sphere::{ContactError, ListError, ParameterError};
 
+use crate::limits::MAX_CELLS;
+
 /// Why a scene could not be set up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SceneError {
@@ -14,7 +16,7 @@ pub enum SceneError {
     /// than 3 cells (the half-shell would visit a pair twice).
     Domain,
     /// The domain cut into cells no smaller than the largest diameter plus the skin gives more
-    /// cells than a scene holds ([`MAX_CELLS`](crate::MAX_CELLS)): a cell size given in the
+    /// cells than a scene holds ([`MAX_CELLS`]): a cell size given in the
     /// wrong unit, or a domain far larger than its spheres. Refused before anything is
     /// allocated.
     TooManyCells {
@@ -60,7 +62,7 @@ impl fmt::Display for SceneError {
                 f,
                 "the domain would have {cells} cells, more than a scene holds ({}): is the \
                  largest diameter or the domain in the wrong unit?",
-                crate::MAX_CELLS
+                MAX_CELLS
             ),
             Self::Diameter { index } => write!(
                 f,

@@ -8,6 +8,7 @@
 use soft_sphere::{CheckedSphere, Float, Vec3};
 
 use crate::error::SceneError;
+use crate::limits::MAX_CELLS;
 
 /// The box the spheres live in. `x` and `y` may be periodic; `z` never is (use walls).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -43,11 +44,6 @@ const HALF_SHELL: [(isize, isize, isize); 14] = [
     (0, 1, 1),
     (1, 1, 1),
 ];
-
-/// The most cells a scene's grid holds: 2^26 (256 MiB of cell counts), far past any domain
-/// cut into cells the size of its spheres that fits in memory beside them. A domain with more
-/// is refused ([`SceneError::TooManyCells`]) before anything is allocated.
-pub const MAX_CELLS: usize = 1 << 26;
 
 /// A domain cut into cells at least as large as the largest contact distance plus the skin.
 #[derive(Clone, Copy, Debug)]

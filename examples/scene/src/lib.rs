@@ -43,6 +43,7 @@ mod buffers;
 mod energy;
 mod error;
 mod grid;
+mod limits;
 #[cfg(feature = "alloc")]
 mod owned;
 mod parallel;
@@ -57,7 +58,8 @@ mod walls;
 pub use buffers::{BufferSizes, SceneBuffers};
 pub use energy::Energy;
 pub use error::{SceneError, StepError};
-pub use grid::{Domain, MAX_CELLS};
+pub use grid::Domain;
+pub use limits::MAX_CELLS;
 #[cfg(feature = "alloc")]
 pub use owned::{OwnedScene, PAIRS_PER_SPHERE, PARKING};
 pub use parallel::{Executor, Serial};
