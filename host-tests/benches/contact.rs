@@ -1,5 +1,6 @@
 //! Per-contact cost: one contact evaluation (hot cache, 1024 independent touching pairs
-//! per iteration) for every tangential law x f32/f64 x math backend, and the slots a scene can switch
+//! per iteration) for every named law of the kernel's list, Models A, B and C and the rolling
+//! slots x f32/f64 x math backend, and the slots a scene can switch
 //! off (friction, rotation, damping), and what an engine's way of calling costs (the law, the
 //! bound law checking its spheres, the bound law on checked spheres). Also prints the per-contact
 //! state size.
@@ -13,9 +14,9 @@ use host_tests::pairs::touching_pairs;
 use soft_sphere::{
     CheckedSphere, ConstantRolling, ContactLaw, ElasticPlasticRolling, Float, Frictionless, Hertz,
     HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, MicroSlip,
-    Micromath, MindlinAA, MindlinParameters, ModelA, ModelAA, ModelB, ModelC, NormalModel,
-    RollingModel, Rotation, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep,
-    Vec3, Wall, effective_mass,
+    Micromath, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelA, ModelAA,
+    ModelAALuding, ModelB, ModelC, NormalModel, RollingModel, Rotation, Sphere, Stateless,
+    TangentialModel, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
 };
 
 const BATCH: usize = 1024;
@@ -53,21 +54,77 @@ where
     group.finish();
 }
 
+/// The tangential slot of a named law, made from its family's parameters (`p` for the linear
+/// spring-dashpot, `mindlin` for Hertz).
+macro_rules! slot {
+    ($normal:ident, Frictionless, $F:ty) => {
+        Frictionless
+    };
+    (Hertz, MicroSlip, $F:ty) => {
+        MicroSlip::<$F, 16>::new(mindlin::<$F>())
+    };
+    (Hertz, $tangential:ident, $F:ty) => {
+        $tangential(mindlin::<$F>())
+    };
+    (LinearSpringDashpot, $tangential:ident, $F:ty) => {
+        $tangential(linear_tangential::<$F>())
+    };
+}
+
+/// Every law of the kernel's list (`soft_sphere::for_each_law!`), timed under its name.
+macro_rules! named_laws {
+    ($($alias:ident = $name:literal, $normal:ident, $tangential:ident;)*) => {
+        /// Times every named law in precision `$F` with backend `$M`.
+        macro_rules! every_named_law {
+            ($c:expr, $F:ty, $M:ty, $label:expr) => {{
+                $(
+                    bench_law(
+                        $c,
+                        &format!("{}/{}", $name, $label),
+                        ContactLaw::new(normal_slot!($normal, $F), slot!($normal, $tangential, $F))
+                            .with_backend::<$M>(),
+                    );
+                )*
+            }};
+        }
+    };
+}
+soft_sphere::for_each_law!(named_laws);
+
+/// The normal slot of a named law.
+macro_rules! normal_slot {
+    (LinearSpringDashpot, $F:ty) => {
+        LinearSpringDashpot::new(1000.0 as $F, 0.9 as $F).unwrap()
+    };
+    (Hertz, $F:ty) => {
+        hertz::<$F>()
+    };
+}
+
+fn linear_tangential<F: Float>() -> TangentialParameters<F> {
+    TangentialParameters::new(F::from_f64(285.7), F::from_f64(0.5), F::from_f64(0.5)).unwrap()
+}
+
+fn mindlin<F: Float>() -> MindlinParameters<F> {
+    MindlinParameters::new(F::from_f64(2.0e5), F::from_f64(0.5), F::from_f64(0.5)).unwrap()
+}
+
+fn hertz<F: Float>() -> Hertz<F> {
+    let largest = HertzImpact {
+        speed: F::from_f64(1.0),
+        effective_radius: F::from_f64(1.0e-3),
+    };
+    Hertz::new(F::from_f64(5.0e5), F::from_f64(0.9), largest).unwrap()
+}
+
+/// Every named law, then Models C, A and B (the laws Elghannay & Tafti compare), then Model AA
+/// with each rolling slot.
 macro_rules! every_law {
     ($c:expr, $F:ty, $M:ty, $label:expr) => {{
+        every_named_law!($c, $F, $M, $label);
         let normal = LinearSpringDashpot::new(1000.0 as $F, 0.9 as $F).unwrap();
-        let p = TangentialParameters::new(285.7 as $F, 0.5 as $F, 0.5 as $F).unwrap();
+        let p = linear_tangential::<$F>();
         let with = |name: &str| format!("{name}/{}", $label);
-        bench_law(
-            $c,
-            &with("frictionless"),
-            ContactLaw::new(normal, Frictionless).with_backend::<$M>(),
-        );
-        bench_law(
-            $c,
-            &with("stateless"),
-            ContactLaw::new(normal, Stateless(p)).with_backend::<$M>(),
-        );
         bench_law(
             $c,
             &with("model_c"),
@@ -85,12 +142,7 @@ macro_rules! every_law {
         );
         bench_law(
             $c,
-            &with("model_aa"),
-            ContactLaw::new(normal, ModelAA(p)).with_backend::<$M>(),
-        );
-        bench_law(
-            $c,
-            &with("model_aa_constant_rolling"),
+            &with("aa_constant_rolling"),
             ContactLaw::new(normal, ModelAA(p))
                 .with_rolling(ConstantRolling::new(0.1 as $F).unwrap())
                 .with_backend::<$M>(),
@@ -99,26 +151,10 @@ macro_rules! every_law {
             ElasticPlasticRolling::new(0.1 as $F, 1.0e-4 as $F, 0.0 as $F, 1.0e-9 as $F).unwrap();
         bench_law(
             $c,
-            &with("model_aa_epsd_rolling"),
+            &with("aa_epsd_rolling"),
             ContactLaw::new(normal, ModelAA(p))
                 .with_rolling(epsd)
                 .with_backend::<$M>(),
-        );
-        let largest = HertzImpact {
-            speed: 1.0 as $F,
-            effective_radius: 1.0e-3 as $F,
-        };
-        let hertz = Hertz::new(5.0e5 as $F, 0.9 as $F, largest).unwrap();
-        let mindlin = MindlinParameters::new(2.0e5 as $F, 0.5 as $F, 0.5 as $F).unwrap();
-        bench_law(
-            $c,
-            &with("hertz_frictionless"),
-            ContactLaw::new(hertz, Frictionless).with_backend::<$M>(),
-        );
-        bench_law(
-            $c,
-            &with("hertz_mindlin_aa"),
-            ContactLaw::new(hertz, MindlinAA(mindlin)).with_backend::<$M>(),
         );
     }};
 }

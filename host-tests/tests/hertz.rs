@@ -795,7 +795,6 @@ fn a_sliding_step_keeps_what_each_rule_says() {
 
 #[test]
 fn the_stateless_mindlin_law_follows_its_closed_form_and_step() {
-    use soft_sphere::tangential::elapsed_contact_time;
     use soft_sphere::{Libm, NormalModel};
     let (e_star, g_star, mu, ratio) = (1.0e9, 0.4e9, 10.0, 0.5);
     let hertz = Hertz::new(e_star, 0.5, impact(1.0, 1e-3)).unwrap();
@@ -810,7 +809,12 @@ fn the_stateless_mindlin_law_follows_its_closed_form_and_step() {
     // xi = v_t t_e with t_e from the oscillator at this overlap; trial -(k_t t_e + eta_t) v_t.
     let unit = hertz.oscillator::<Libm>(sphere.mass);
     let contact = hertz.contact::<Libm>(delta, -approach, 1e-3, &unit);
-    let elapsed = elapsed_contact_time::<f64, Libm>(delta, approach, &contact.oscillator);
+    // The time since first touch of the linearised oscillator's binary impact, at whose phase
+    // the overlap is delta and grows at `approach`: tan(wd t) = wd delta / (delta' + beta delta).
+    let o = contact.oscillator;
+    let (wd, beta) = (o.damped_frequency, o.decay_rate);
+    assert!(wd > beta, "underdamped");
+    let elapsed = (wd * delta).atan2(approach + beta * delta) / wd;
     let a = contact.contact_radius;
     let eta_t = ratio * contact.oscillator.damping_coefficient;
     let expected = (8.0 * g_star * a * elapsed + eta_t) * slip;

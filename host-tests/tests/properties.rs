@@ -16,12 +16,10 @@ use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     ContactForces, ContactHistory, ContactKey, ContactLaw, Float, Frictionless, Interaction,
-    LeverArm, Libm, LinearSpringDashpot, Micromath, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
-    Sphere, SpringDisplacement, Stateless, TangentialModel, TangentialParameters, TimeStep, Vec3,
-    effective_mass,
+    LeverArm, Libm, LinearLaw, LinearSpringDashpot, Micromath, ModelA, ModelAA, ModelAALuding,
+    ModelB, ModelC, Sphere, SpringDisplacement, Stateless, TangentialModel, TangentialParameters,
+    TimeStep, Vec3, effective_mass,
 };
-
-type Linear<F, T> = ContactLaw<F, LinearSpringDashpot<F>, T>;
 
 /// Energy stored in a contact's tangential spring, `k_t |xi|^2 / 2` (none for stateless laws).
 trait StoredEnergy {
@@ -65,7 +63,7 @@ fn law_for<F: Float, T: TangentialModel<F>>(
     effective_mass: f64,
     make: impl Fn(TangentialParameters<F>) -> T,
     clamped: bool,
-) -> (Linear<F, T>, f64, f64) {
+) -> (LinearLaw<F, T>, f64, f64) {
     let m = c.material;
     let k_n = c.normal_stiffness(effective_mass);
     let k_t = m.stiffness_ratio * k_n;
@@ -84,7 +82,7 @@ fn law_for<F: Float, T: TangentialModel<F>>(
     (ContactLaw::new(normal, make(p)), k_n, k_t)
 }
 
-fn step_for<F: Float, T: TangentialModel<F>>(law: &Linear<F, T>, m_star: F) -> TimeStep<F> {
+fn step_for<F: Float, T: TangentialModel<F>>(law: &LinearLaw<F, T>, m_star: F) -> TimeStep<F> {
     law.time_step(law.recommended_time_step(m_star), m_star)
         .expect("the recommended step is stable")
 }

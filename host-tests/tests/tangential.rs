@@ -700,57 +700,6 @@ fn model_aa_cuts_its_spring_only_when_the_contact_slides() {
     );
 }
 
-#[test]
-fn a_spring_in_the_plane_keeps_its_length_down_to_the_smallest_normal_float() {
-    use soft_sphere::Libm;
-    use soft_sphere::tangential::rotate_into_tangent_plane;
-    let normal = Vec3::new(0.0, 0.0, 1.0);
-    // A tangential part whose squared length is exactly the smallest normal float is a spring;
-    // one float shorter it counts as none.
-    let root = f64::MIN_POSITIVE.sqrt();
-    let kept = Vec3::new(root, 0.0, 1e-3);
-    let turned = rotate_into_tangent_plane::<f64, Libm>(kept, normal);
-    // Turned into the plane with its whole length.
-    assert!(turned.x > 0.0 && turned.y == 0.0 && turned.z == 0.0);
-    assert!((turned.x / kept.norm_squared().sqrt() - 1.0).abs() < 1e-12);
-    let gone = Vec3::new(root.next_down(), 0.0, 1e-3);
-    assert_eq!(
-        rotate_into_tangent_plane::<f64, Libm>(gone, normal),
-        Vec3::ZERO
-    );
-}
-
-#[test]
-fn the_elapsed_time_is_read_off_the_normal_oscillator_exactly() {
-    use soft_sphere::Libm;
-    use soft_sphere::tangential::elapsed_contact_time;
-    // Along the closed-form binary impact delta = (v0 / wd) exp(-beta t) sin(wd t) (and
-    // v0 t exp(-beta t) at critical damping) the estimate is the time since first touch.
-    let (mass, v0) = (1.0e-5, 0.7);
-    for e in [0.0, 0.3, 0.7, 0.98] {
-        let law = ContactLaw::new(LinearSpringDashpot::new(1.0e4, e).unwrap(), Frictionless);
-        let o = law.oscillator(mass);
-        let (wd, beta): (f64, f64) = (o.damped_frequency, o.decay_rate);
-        // Up to the documented bound pi / max(wd, beta).
-        let t_c = std::f64::consts::PI / wd.max(beta);
-        for k in 1..20 {
-            let t = t_c * k as f64 / 20.0;
-            let decay = (-beta * t).exp();
-            let (overlap, rate) = if wd > 0.0 {
-                let (s, c) = (wd * t).sin_cos();
-                (v0 / wd * decay * s, v0 * decay * (c - beta / wd * s))
-            } else {
-                (v0 * t * decay, v0 * decay * (1.0 - beta * t))
-            };
-            let estimate = elapsed_contact_time::<f64, Libm>(overlap, rate, &o);
-            assert!(
-                (estimate / t - 1.0).abs() < 1e-9,
-                "e = {e}, t = {t:e}: {estimate:e}"
-            );
-        }
-    }
-}
-
 /// A trial force and a limit both too large to square (the squares overflow to infinity and
 /// compare equal) still slide at the limit, along the trial force.
 #[test]

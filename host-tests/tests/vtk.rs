@@ -9,15 +9,14 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use soft_sphere::{
-    ContactLaw, Float, LinearMaterial, LinearMixing, LinearSpringDashpot, MaterialTable,
-    MaterialWall, ModelAA, Sphere, Vec3, Wall,
+    Float, LinearAA, LinearMaterial, LinearMixing, MaterialTable, MaterialWall, ModelAA, Sphere,
+    Vec3, Wall,
 };
 use soft_sphere_scene::{
     ContactBodies, ContactView, Domain, Frames, Integrator, OwnedScene, StepInput,
 };
 
-type Law<F> = ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>;
-type Floored<F> = OwnedScene<Law<F>, [MaterialWall<F>; 1]>;
+type Floored<F> = OwnedScene<LinearAA<F>, [MaterialWall<F>; 1]>;
 
 /// What a run wrote and what the scene held at its last frame.
 struct Written<F> {
@@ -136,7 +135,7 @@ fn components<F: Float>(v: Vec3<F>) -> [F; 3] {
 
 /// Two spheres touching across the periodic boundary in x, a third pressed into the floor and
 /// touching the second, all moving and spinning so that no array is all zeros.
-fn scene<F: Float>() -> (Floored<F>, MaterialTable<Law<F>, 2>) {
+fn scene<F: Float>() -> (Floored<F>, MaterialTable<LinearAA<F>, 2>) {
     let f = F::from_f64;
     let r = 1.0e-3;
     let at = |x: f64, y: f64, z: f64| Vec3::new(f(x), f(y), f(z));

@@ -20,6 +20,11 @@ pub(crate) mod sealed {
     #[derive(Clone, Copy, Debug)]
     pub struct Deferred(pub(crate) ());
 
+    /// Only the kernel can make one: a law's own evaluations take it, so that an engine reaches
+    /// them only through [`BoundLaw`](super::BoundLaw), whose calls are the public ones.
+    #[derive(Clone, Copy, Debug)]
+    pub struct Internal(pub(crate) ());
+
     pub use crate::sifted::{Sifted, Sifts};
 }
 
@@ -116,15 +121,17 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
     /// What [`BoundLaw::sphere_sphere`] calls: the law's own evaluation, which for
     /// [`ContactLaw`](crate::ContactLaw) lives in `law.rs` beside the one-contact path whose
     /// private core it shares (the bound law is the engine's handle; the physics stays with the
-    /// law).
+    /// law). Only the kernel can call it.
     ///
     /// # Errors
     /// As [`BoundLaw::sphere_sphere`].
+    #[doc(hidden)]
     fn evaluate_pair(
         bound: &mut BoundLaw<Self>,
         i: &CheckedSphere<Self::Float>,
         j: &CheckedSphere<Self::Float>,
         state: &mut Self::State,
+        internal: sealed::Internal,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
     /// The roots of a sifted chunk's first `found` pairs ([`sealed::Sifts`]), by the law's
@@ -158,15 +165,17 @@ pub trait Law: sealed::Sealed + Copy + core::fmt::Debug + Send + Sync + Sized {
         deferred: sealed::Deferred,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 
-    /// What [`BoundLaw::sphere_wall`] calls.
+    /// What [`BoundLaw::sphere_wall`] calls. Only the kernel can call it.
     ///
     /// # Errors
     /// As [`BoundLaw::sphere_wall`].
+    #[doc(hidden)]
     fn evaluate_wall(
         bound: &mut BoundLaw<Self>,
         sphere: &CheckedSphere<Self::Float>,
         wall: &Wall<Self::Float>,
         state: &mut Self::State,
+        internal: sealed::Internal,
     ) -> Result<Interaction<Self::Float>, ContactError>;
 }
 
@@ -268,7 +277,7 @@ impl<L: Law> BoundLaw<L> {
         j: &CheckedSphere<L::Float>,
         state: &mut L::State,
     ) -> Result<Interaction<L::Float>, ContactError> {
-        L::evaluate_pair(self, i, j, state)
+        L::evaluate_pair(self, i, j, state, sealed::Internal(()))
     }
 
     /// [`BoundLaw::sphere_sphere`] on a pair the list seam sifted, whose caller tests the forces
@@ -299,6 +308,6 @@ impl<L: Law> BoundLaw<L> {
         wall: &Wall<L::Float>,
         state: &mut L::State,
     ) -> Result<Interaction<L::Float>, ContactError> {
-        L::evaluate_wall(self, sphere, wall, state)
+        L::evaluate_wall(self, sphere, wall, state, sealed::Internal(()))
     }
 }

@@ -650,6 +650,7 @@ where
         i: &CheckedSphere<F>,
         j: &CheckedSphere<F>,
         state: &mut Ro::State<T::State>,
+        _: sealed::Internal,
     ) -> Result<Interaction<F>, ContactError> {
         bound_pair(bound, i, j, state)
     }
@@ -711,6 +712,7 @@ where
         sphere: &CheckedSphere<F>,
         wall: &Wall<F>,
         state: &mut Ro::State<T::State>,
+        _: sealed::Internal,
     ) -> Result<Interaction<F>, ContactError> {
         let BoundLaw {
             law,

@@ -244,8 +244,8 @@ pub use forces::{ContactForces, Interaction};
 pub use geometry::LeverArm;
 pub use law::ContactLaw;
 pub use laws::{
-    HertzAA, HertzAALuding, HertzFrictionless, HertzMicroSlip, HertzStateless, LinearAA,
-    LinearAALuding, LinearFrictionless, LinearStateless,
+    HertzAA, HertzAALuding, HertzFrictionless, HertzLaw, HertzMicroSlip, HertzStateless, LinearAA,
+    LinearAALuding, LinearFrictionless, LinearLaw, LinearStateless,
 };
 pub use list::{ContactList, ListOutput, MaterialWall};
 pub use list_error::{ListArray, ListError};

@@ -19,7 +19,8 @@ use crate::ss_params;
 use crate::table::{MicroSlipMixing, Rolled, Tabled, elastic, elastic_frictionless, linear};
 use crate::table::{linear_frictionless, rolled_elastic, rolled_linear};
 
-/// Calls `$callback!` with every law, in two bracketed parts: the laws handles and tables both
+/// Calls `$callback!` with every law of the kernel's list (`soft_sphere::for_each_law!`, whose
+/// aliases name the variants; `host-tests/tests/law_list.rs` checks the two agree), in two bracketed parts: the laws handles and tables both
 /// take, then those only tables take. One entry each: its code's documentation, then
 /// `Variant = SS_MODEL_CODE = value, "name", family, TangentialSlot, tangential;` (a
 /// tables-only law has no name, since no host offers it by name, and names its table's mixing
@@ -34,13 +35,13 @@ macro_rules! with_laws {
         $callback! { $($d)?
             [
                 /// The stateless (simplified) law: no tangential history is read or written.
-                Stateless = SS_MODEL_STATELESS = 0, "stateless", linear, Stateless<F>, Stateless;
+                LinearStateless = SS_MODEL_STATELESS = 0, "stateless", linear, Stateless<F>, Stateless;
                 /// Model AA: stored tangential spring limited to `mu |F_n| / k_t`.
-                ModelAA = SS_MODEL_AA = 1, "aa", linear, ModelAA<F>, ModelAA;
+                LinearAA = SS_MODEL_AA = 1, "aa", linear, ModelAA<F>, ModelAA;
                 /// Model AA with Luding's reset: after sliding, spring plus dashpot equal the sliding force.
-                ModelAALuding = SS_MODEL_AA_LUDING = 2, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
+                LinearAALuding = SS_MODEL_AA_LUDING = 2, "aa/luding", linear, ModelAALuding<F>, ModelAALuding;
                 /// No friction: normal force only (no tangential force, no torque, no state).
-                Frictionless = SS_MODEL_FRICTIONLESS = 3, "frictionless", linear, Frictionless, frictionless;
+                LinearFrictionless = SS_MODEL_FRICTIONLESS = 3, "frictionless", linear, Frictionless, frictionless;
                 /// Hertz, no friction.
                 HertzFrictionless = SS_MODEL_HERTZ_FRICTIONLESS = 4, "hertz/frictionless", hertz, Frictionless, frictionless;
                 /// Hertz with the stateless Mindlin law.
@@ -66,12 +67,7 @@ mod family {
     /// The linear spring-dashpot.
     pub(crate) mod linear {
         /// The law.
-        pub(crate) type Law<F, T> = soft_sphere::ContactLaw<
-            F,
-            soft_sphere::LinearSpringDashpot<F>,
-            T,
-            <F as crate::real::Real>::Backend,
-        >;
+        pub(crate) type Law<F, T> = soft_sphere::LinearLaw<F, T, <F as crate::real::Real>::Backend>;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
             soft_sphere::LinearMixing<F, T, <F as crate::real::Real>::Backend>;
@@ -79,8 +75,7 @@ mod family {
     /// Hertz.
     pub(crate) mod hertz {
         /// The law.
-        pub(crate) type Law<F, T> =
-            soft_sphere::ContactLaw<F, soft_sphere::Hertz<F>, T, <F as crate::real::Real>::Backend>;
+        pub(crate) type Law<F, T> = soft_sphere::HertzLaw<F, T, <F as crate::real::Real>::Backend>;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
             soft_sphere::HertzMixing<F, T, <F as crate::real::Real>::Backend>;

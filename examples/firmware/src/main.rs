@@ -13,7 +13,7 @@ use cortex_m_semihosting::{debug, hprintln};
 use fixed_loop::BoxScene;
 use panic_semihosting as _;
 use soft_sphere::{
-    ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearSpringDashpot, ModelA,
+    ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearLaw, LinearSpringDashpot, ModelA,
     ModelAA, ModelB, ModelC, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep,
     Vec3,
 };
@@ -80,10 +80,9 @@ fn pair() -> (Sphere<f32>, Sphere<f32>) {
 }
 
 /// A law of this firmware, by tangential model.
-type Linear<T> = ContactLaw<f32, LinearSpringDashpot<f32>, T>;
 /// The signature of the per-law contact routines.
 type Routine<T> = fn(
-    &Linear<T>,
+    &LinearLaw<f32, T>,
     &Sphere<f32>,
     &Sphere<f32>,
     &mut <T as TangentialModel<f32>>::State,

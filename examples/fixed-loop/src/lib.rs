@@ -24,7 +24,7 @@
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
     CheckedSphere, ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, Libm,
-    LinearSpringDashpot, MathBackend, Micromath, ModelAA, ParameterError, Sphere,
+    LinearLaw, LinearSpringDashpot, MathBackend, Micromath, ModelAA, ParameterError, Sphere,
     SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,
 };
 
@@ -45,7 +45,7 @@ pub const DENSITY: f32 = 2500.0;
 pub const GRAVITY: f32 = 9.81;
 
 /// The law every contact of the scene uses.
-pub type LoopLaw<M> = ContactLaw<f32, LinearSpringDashpot<f32>, ModelAA<f32>, M>;
+pub type LoopLaw<M> = LinearLaw<f32, ModelAA<f32>, M>;
 
 /// Energies of the scene at one instant.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -10,8 +10,8 @@ use std::error::Error;
 
 use soft_sphere::motion::advance_solid_sphere;
 use soft_sphere::{
-    ContactLaw, Interaction, LinearSpringDashpot, ModelA, ModelAA, ModelB, ModelC, Sphere,
-    Stateless, TangentialModel, TangentialParameters, Vec3, Wall,
+    ContactLaw, Interaction, LinearSpringDashpot, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
+    Sphere, Stateless, TangentialModel, TangentialParameters, Vec3, Wall,
 };
 
 // Elghannay & Tafti's parameters.
@@ -121,6 +121,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let rows = [
         ("stateless", impact(Stateless(p), angle_deg)?),
         ("model AA", impact(ModelAA(p), angle_deg)?),
+        ("AA, Luding", impact(ModelAALuding(p), angle_deg)?),
         ("model A", impact(ModelA(p), angle_deg)?),
         ("model B", impact(ModelB(p), angle_deg)?),
         ("model C", impact(ModelC(p), angle_deg)?),

@@ -35,7 +35,7 @@ impl<F: Float> ContactState for SpringDisplacement<F> {
 /// the plane nor shortens it. A displacement with no tangential part left (its squared length
 /// below the smallest normal float) becomes zero.
 #[inline(always)]
-pub fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
+pub(crate) fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     displacement: Vec3<F>,
     normal: Vec3<F>,
 ) -> Vec3<F> {
@@ -178,3 +178,28 @@ stored_spring_model!(ModelAA, Slide::AlongTrial, Keep::Capped);
 pub struct ModelAALuding<F>(pub TangentialParameters<F>);
 
 stored_spring_model!(ModelAALuding, Slide::AlongTrial, Keep::Luding);
+
+#[cfg(test)]
+mod tests {
+    use super::rotate_into_tangent_plane;
+    use crate::backend::Libm;
+    use crate::vector::Vec3;
+
+    #[test]
+    fn a_spring_in_the_plane_keeps_its_length_down_to_the_smallest_normal_float() {
+        let normal = Vec3::new(0.0, 0.0, 1.0);
+        // A tangential part whose squared length is exactly the smallest normal float is a
+        // spring; one float shorter it counts as none.
+        let root = libm::sqrt(f64::MIN_POSITIVE);
+        let kept = Vec3::new(root, 0.0, 1e-3);
+        let turned = rotate_into_tangent_plane::<f64, Libm>(kept, normal);
+        // Turned into the plane with its whole length.
+        assert!(turned.x > 0.0 && turned.y == 0.0 && turned.z == 0.0);
+        assert!(libm::fabs(turned.x / libm::sqrt(kept.norm_squared()) - 1.0) < 1e-12);
+        let gone = Vec3::new(root.next_down(), 0.0, 1e-3);
+        assert_eq!(
+            rotate_into_tangent_plane::<f64, Libm>(gone, normal),
+            Vec3::ZERO
+        );
+    }
+}

@@ -230,8 +230,8 @@ stored_mindlin_model!(MindlinAALuding, Keep::Luding);
 
 /// The stateless law under Hertz: `xi = v_t t_e` with Mindlin's stiffness at the current contact
 /// radius, then Model AA's limit and sliding rule. Stores nothing. `t_e` comes from the contact's
-/// oscillator linearised at the current overlap ([`elapsed_contact_time`](super::elapsed_contact_time)),
-/// an estimate for a contact that stiffens as it loads.
+/// oscillator linearised at the current overlap (as [`Stateless`](super::Stateless)'s does), an
+/// estimate for a contact that stiffens as it loads.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MindlinStateless<F>(pub MindlinParameters<F>);
 

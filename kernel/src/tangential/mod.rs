@@ -34,13 +34,13 @@ mod model_c;
 mod stateless;
 
 pub use frictionless::Frictionless;
-pub use history::{
-    ModelA, ModelAA, ModelAALuding, ModelB, SpringDisplacement, rotate_into_tangent_plane,
-};
+pub(crate) use history::rotate_into_tangent_plane;
+pub use history::{ModelA, ModelAA, ModelAALuding, ModelB, SpringDisplacement};
 pub use micro_slip::{MicroSlip, MicroSlipSprings};
 pub use mindlin::{MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless};
 pub use model_c::ModelC;
-pub use stateless::{Stateless, elapsed_contact_time};
+pub use stateless::Stateless;
+pub(crate) use stateless::elapsed_contact_time;
 
 use crate::backend::MathBackend;
 use crate::error::{Parameter, ParameterError, non_negative, positive};
@@ -120,7 +120,7 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
     ) -> TangentialOutput<F, Self::State>;
 
     /// Whether the step turns a stored vector into the current tangent plane
-    /// ([`rotate_into_tangent_plane`]) before using it: then the list seam turns it for a whole
+    /// (`rotate_into_tangent_plane`) before using it: then the list seam turns it for a whole
     /// chunk of contacts before evaluating them ([`force_turned`](Self::force_turned)). Only
     /// the kernel reads it.
     #[doc(hidden)]
@@ -137,7 +137,7 @@ pub trait TangentialModel<F: Float>: Copy + core::fmt::Debug + Send + Sync {
 
     /// [`force`](Self::force) with `turned` the [`stored_vector`](Self::stored_vector) of the
     /// same state already turned into the tangent plane of the contact's normal by
-    /// [`rotate_into_tangent_plane`] with the same backend: the same bits. Only the kernel calls
+    /// `rotate_into_tangent_plane` with the same backend: the same bits. Only the kernel calls
     /// it.
     #[doc(hidden)]
     #[inline(always)]

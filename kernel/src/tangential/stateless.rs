@@ -27,7 +27,7 @@ pub struct Stateless<F>(pub TangentialParameters<F>);
 
 /// Estimated time since first touch of a binary impact, from the overlap and its rate.
 #[inline(always)]
-pub fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
+pub(crate) fn elapsed_contact_time<F: Float, M: MathBackend<F>>(
     overlap: F,
     approach_rate: F,
     oscillator: &NormalOscillator<F>,
@@ -100,5 +100,61 @@ impl<F: Float> TangentialModel<F> for Stateless<F> {
             oscillator,
             tangential_mass,
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elapsed_contact_time;
+    use crate::backend::Libm;
+    use crate::normal::{LinearSpringDashpot, NormalModel};
+    use core::f64::consts::PI;
+
+    #[test]
+    fn the_elapsed_time_is_read_off_the_normal_oscillator_exactly() {
+        // Along the closed-form binary impact delta = (v0 / wd) exp(-beta t) sin(wd t) (and
+        // v0 t exp(-beta t) at critical damping) the estimate is the time since first touch.
+        let (mass, v0) = (1.0e-5, 0.7);
+        for e in [0.0, 0.3, 0.7, 0.98] {
+            let law = LinearSpringDashpot::new(1.0e4, e).unwrap();
+            let o = NormalModel::<f64>::oscillator::<Libm>(&law, mass);
+            let (wd, beta) = (o.damped_frequency, o.decay_rate);
+            // Up to the documented bound pi / max(wd, beta).
+            let t_c = PI / wd.max(beta);
+            for k in 1..20 {
+                let t = t_c * f64::from(k) / 20.0;
+                let decay = libm::exp(-beta * t);
+                let (overlap, rate) = if wd > 0.0 {
+                    let (s, c) = (libm::sin(wd * t), libm::cos(wd * t));
+                    (v0 / wd * decay * s, v0 * decay * (c - beta / wd * s))
+                } else {
+                    (v0 * t * decay, v0 * decay * (1.0 - beta * t))
+                };
+                let estimate = elapsed_contact_time::<f64, Libm>(overlap, rate, &o);
+                assert!(
+                    libm::fabs(estimate / t - 1.0) < 1e-9,
+                    "e = {e}, t = {t:e}: {estimate:e}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_elapsed_time_is_continuous_as_the_damped_frequency_vanishes() {
+        // Found by the f32-against-f64 property at e = 0: a rounding-sized wd used to give
+        // pi / wd late in a contact instead of the wd = 0 branch's pi / beta.
+        let law = LinearSpringDashpot::new(1000.0f64, 0.0).unwrap();
+        let exact = NormalModel::<f64>::oscillator::<Libm>(&law, 1e-3);
+        assert_eq!(exact.damped_frequency, 0.0);
+        let mut nearly = exact;
+        nearly.damped_frequency = 1e-9 * exact.natural_frequency;
+        for (overlap, rate) in [(1e-4, 0.5), (1e-4, -0.01), (1e-4, -0.5), (1e-6, -1.0)] {
+            let a = elapsed_contact_time::<f64, Libm>(overlap, rate, &exact);
+            let b = elapsed_contact_time::<f64, Libm>(overlap, rate, &nearly);
+            assert!(
+                libm::fabs(a - b) <= 1e-6 * a,
+                "{overlap} {rate}: {a} vs {b}"
+            );
+        }
     }
 }
