@@ -14,8 +14,8 @@ use soft_sphere::{
 ///
 /// # Errors
 /// The seam's.
-pub fn evaluate_swapping<L: Law, const M: usize>(
-    table: &MaterialTable<L, M>,
+pub fn evaluate_swapping<L: Law, const MATERIALS: usize>(
+    table: &MaterialTable<L, MATERIALS>,
     dt: TimeStep<L::Float>,
     spheres: &impl Spheres<L::Float>,
     contacts: Contacts<'_, '_, L>,
@@ -50,8 +50,8 @@ pub type Written<'o, F> = (
 ///
 /// # Errors
 /// The seam's.
-pub fn evaluate_swapping_on<L: Law, E: Executor, const M: usize>(
-    table: &MaterialTable<L, M>,
+pub fn evaluate_swapping_on<L: Law, E: Executor, const MATERIALS: usize>(
+    table: &MaterialTable<L, MATERIALS>,
     (executor, loads): (&E, &mut [PairLoad<L::Float>]),
     dt: TimeStep<L::Float>,
     spheres: &impl Spheres<L::Float>,

@@ -207,9 +207,13 @@ fn open_box() -> Domain<f64> {
 }
 
 /// The account at the end of each step of `steps` of `scene`.
-fn accounts<L: Law<Float = f64>, W: soft_sphere_scene::WallSet<f64> + Clone, const M: usize>(
+fn accounts<
+    L: Law<Float = f64>,
+    W: soft_sphere_scene::WallSet<f64> + Clone,
+    const MATERIALS: usize,
+>(
     scene: &mut OwnedScene<L, W>,
-    input: &StepInput<'_, L, M>,
+    input: &StepInput<'_, L, MATERIALS>,
     steps: usize,
 ) -> Vec<Energy<f64>> {
     let mut energies = Vec::with_capacity(steps);

@@ -92,9 +92,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// Books the contacts of a committed evaluation: their stored energy, the sliders' share of
     /// the step's dissipation, a moving wall's drive. Reads the records, the states after the
     /// step and the seam's copy of the states before it.
-    pub(crate) fn account_contacts<const M: usize>(
+    pub(crate) fn account_contacts<const MATERIALS: usize>(
         &mut self,
-        table: &MaterialTable<L, M>,
+        table: &MaterialTable<L, MATERIALS>,
         dt: L::Float,
     ) {
         let count = self.list.len();

@@ -126,9 +126,9 @@ pub struct StepStats<F> {
 
 /// One step's fixed inputs.
 #[derive(Debug)]
-pub struct StepInput<'l, L: Law, const M: usize> {
+pub struct StepInput<'l, L: Law, const MATERIALS: usize> {
     /// The law of every pair of materials (walls' materials included).
-    pub table: &'l MaterialTable<L, M>,
+    pub table: &'l MaterialTable<L, MATERIALS>,
     /// Gravitational acceleration (m/s^2).
     pub gravity: Vec3<L::Float>,
     /// The checked step: [`Scene::time_step`] checks it against the spheres present.
@@ -364,9 +364,9 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     /// # Errors
     /// [`StepError::TimeStep`] for the first pair of materials whose law refuses the step;
     /// [`StepError::Material`] / [`StepError::WallMaterial`] for an id past the table.
-    pub fn time_step<const M: usize>(
+    pub fn time_step<const MATERIALS: usize>(
         &self,
-        table: &MaterialTable<L, M>,
+        table: &MaterialTable<L, MATERIALS>,
         seconds: L::Float,
     ) -> Result<TimeStep<L::Float>, StepError> {
         table
@@ -380,9 +380,9 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     ///
     /// # Errors
     /// As [`Scene::time_step`].
-    pub fn coarse_time_step<const M: usize>(
+    pub fn coarse_time_step<const MATERIALS: usize>(
         &self,
-        table: &MaterialTable<L, M>,
+        table: &MaterialTable<L, MATERIALS>,
         seconds: L::Float,
     ) -> Result<TimeStep<L::Float>, StepError> {
         table
@@ -395,9 +395,9 @@ impl<'a, L: Law, W: WallSet<L::Float>, const K: usize> Scene<'a, L, W, K> {
     ///
     /// # Errors
     /// As [`Scene::time_step`] for material ids past the table.
-    pub fn recommended_time_step<const M: usize>(
+    pub fn recommended_time_step<const MATERIALS: usize>(
         &self,
-        table: &MaterialTable<L, M>,
+        table: &MaterialTable<L, MATERIALS>,
     ) -> Result<Option<L::Float>, StepError> {
         table
             .recommended_time_step(&self.sphere_slice(), self.walls.walls())

@@ -230,9 +230,9 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
     ///
     /// # Errors
     /// The first [`StepError`].
-    pub fn run<const M: usize>(
+    pub fn run<const MATERIALS: usize>(
         &mut self,
-        input: &StepInput<'_, L, M>,
+        input: &StepInput<'_, L, MATERIALS>,
         steps: usize,
         each: impl FnMut(usize, &StepStats<L::Float>),
     ) -> Result<(), StepError> {
@@ -243,9 +243,9 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
     ///
     /// # Errors
     /// As [`OwnedScene::run`].
-    pub fn run_on<E: Executor, const M: usize>(
+    pub fn run_on<E: Executor, const MATERIALS: usize>(
         &mut self,
-        input: &StepInput<'_, L, M>,
+        input: &StepInput<'_, L, MATERIALS>,
         steps: usize,
         executor: &E,
         mut each: impl FnMut(usize, &StepStats<L::Float>),

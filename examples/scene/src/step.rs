@@ -63,9 +63,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     ///
     /// # Errors
     /// As [`Scene::step_on`].
-    pub fn step<const M: usize>(
+    pub fn step<const MATERIALS: usize>(
         &mut self,
-        input: &StepInput<'_, L, M>,
+        input: &StepInput<'_, L, MATERIALS>,
     ) -> Result<StepStats<L::Float>, StepError> {
         self.step_on(input, &Serial)
     }
@@ -92,9 +92,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     ///   velocity; that sphere keeps its previous state, and every later step returns
     ///   [`StepError::Halted`].
     /// - [`StepError::Gravity`] for a non-finite gravity, before anything changes.
-    pub fn step_on<E: Executor, const M: usize>(
+    pub fn step_on<E: Executor, const MATERIALS: usize>(
         &mut self,
-        input: &StepInput<'_, L, M>,
+        input: &StepInput<'_, L, MATERIALS>,
         executor: &E,
     ) -> Result<StepStats<L::Float>, StepError> {
         if self.halted {
@@ -259,9 +259,9 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     /// one call of the kernel's list seam, and, when `commit`, the history advanced (all or
     /// nothing: the seam reads the current states and writes the next buffer, which becomes
     /// current only when the call succeeds and the step commits).
-    fn evaluate<E: Executor, const M: usize>(
+    fn evaluate<E: Executor, const MATERIALS: usize>(
         &mut self,
-        input: &StepInput<'_, L, M>,
+        input: &StepInput<'_, L, MATERIALS>,
         commit: bool,
         executor: &E,
     ) -> Result<StepStats<L::Float>, StepError> {

@@ -164,11 +164,11 @@ struct Measured {
     pair_contact_steps: usize,
 }
 
-fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const M: usize>(
+fn time_runs<L: Law<Float = f64>, W: WallSet<f64> + Clone, const MATERIALS: usize>(
     o: &Options,
     (spheres, materials): (&[Sphere<f64>], &[u32]),
     height: f64,
-    input: &StepInput<'_, L, M>,
+    input: &StepInput<'_, L, MATERIALS>,
     walls: &W,
 ) -> Result<Measured, Box<dyn Error>> {
     let mut seconds = Vec::new();
