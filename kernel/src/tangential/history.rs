@@ -3,6 +3,7 @@
 //! tangent plane, then add `v_t dt`) and differ in the sliding rule and in what they keep after
 //! sliding.
 
+use super::stored::{Keep, StoredSpring, stored_spring_model};
 use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
 };
@@ -49,96 +50,60 @@ pub(crate) fn rotate_into_tangent_plane<F: Float, M: MathBackend<F>>(
     projected * M::sqrt(displacement.norm_squared() / projected_squared)
 }
 
-/// What a stored-spring law keeps of its displacement after a sliding step.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Keep {
-    /// All of it: the spring grows without bound (Models A and B).
-    Everything,
-    /// At most `mu |F_n| / k_t` of it (Model AA).
-    Capped,
-    /// The displacement whose spring and dashpot give the sliding force:
-    /// `xi = -(F_t + eta_t v_t) / k_t` (Luding 2008).
-    Luding,
-}
+/// The linear family's stored spring: the displacement `xi`, rotated into the current tangent
+/// plane, then `xi += v_t dt`.
+impl<F: Float> StoredSpring<F> for TangentialParameters<F> {
+    type State = SpringDisplacement<F>;
+    const NEEDS_CONTACT_RADIUS: bool = false;
 
-/// The shared step of the stored-spring laws; `keep` says what is kept after a sliding step.
-#[inline(always)]
-fn stored_spring_step<F: Float, M: MathBackend<F>>(
-    parameters: &TangentialParameters<F>,
-    state: &SpringDisplacement<F>,
-    contact: &TangentialInput<F>,
-    (slide, keep): (Slide, Keep),
-    turned: Option<Vec3<F>>,
-) -> TangentialOutput<F, SpringDisplacement<F>> {
-    let turned = turned
-        .unwrap_or_else(|| rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal));
-    let displacement = turned + contact.slip_velocity * contact.time_step;
-    let (force, sliding) = parameters.slide::<M>(displacement, contact, slide);
-    let kept = match keep {
-        Keep::Capped if sliding => {
-            let longest = parameters.limit(contact) / parameters.stiffness();
-            let length_squared = displacement.norm_squared();
-            if length_squared > longest * longest {
-                displacement * (longest * M::inv_sqrt(length_squared))
-            } else {
-                displacement
+    #[inline(always)]
+    fn step<M: MathBackend<F>>(
+        &self,
+        state: &SpringDisplacement<F>,
+        contact: &TangentialInput<F>,
+        (slide, keep): (Slide, Keep),
+        turned: Option<Vec3<F>>,
+    ) -> TangentialOutput<F, SpringDisplacement<F>> {
+        let turned = turned.unwrap_or_else(|| {
+            rotate_into_tangent_plane::<F, M>(state.displacement, contact.normal)
+        });
+        let displacement = turned + contact.slip_velocity * contact.time_step;
+        let (force, sliding) = self.slide::<M>(displacement, contact, slide);
+        let kept = match keep {
+            Keep::Capped if sliding => {
+                let longest = self.limit(contact) / self.stiffness();
+                let length_squared = displacement.norm_squared();
+                if length_squared > longest * longest {
+                    displacement * (longest * M::inv_sqrt(length_squared))
+                } else {
+                    displacement
+                }
             }
+            Keep::Luding if sliding => {
+                -(force + contact.slip_velocity * self.dashpot(&contact.oscillator))
+                    * (F::ONE / self.stiffness())
+            }
+            _ => displacement,
+        };
+        TangentialOutput {
+            force,
+            state: SpringDisplacement { displacement: kept },
+            sliding,
         }
-        Keep::Luding if sliding => {
-            -(force + contact.slip_velocity * parameters.dashpot(&contact.oscillator))
-                * (F::ONE / parameters.stiffness())
-        }
-        _ => displacement,
-    };
-    TangentialOutput {
-        force,
-        state: SpringDisplacement { displacement: kept },
-        sliding,
     }
-}
 
-/// The slot's behaviour for a law struct declared beside its invocation.
-macro_rules! stored_spring_model {
-    ($name:ident, $slide:expr, $keep:expr) => {
-        impl<F: Float> TangentialModel<F> for $name<F> {
-            type State = SpringDisplacement<F>;
+    #[inline(always)]
+    fn stored_vector(state: &SpringDisplacement<F>) -> Vec3<F> {
+        state.displacement
+    }
 
-            #[inline(always)]
-            fn force<M: MathBackend<F>>(
-                &self,
-                state: &SpringDisplacement<F>,
-                contact: &TangentialInput<F>,
-            ) -> TangentialOutput<F, SpringDisplacement<F>> {
-                stored_spring_step::<F, M>(&self.0, state, contact, ($slide, $keep), None)
-            }
+    fn stored_energy(&self, state: &SpringDisplacement<F>) -> F {
+        F::HALF * self.stiffness() * state.displacement.norm_squared()
+    }
 
-            const TURNS: bool = true;
-
-            #[inline(always)]
-            fn stored_vector(state: &SpringDisplacement<F>) -> Vec3<F> {
-                state.displacement
-            }
-
-            #[inline(always)]
-            fn force_turned<M: MathBackend<F>>(
-                &self,
-                state: &SpringDisplacement<F>,
-                contact: &TangentialInput<F>,
-                turned: Vec3<F>,
-            ) -> TangentialOutput<F, SpringDisplacement<F>> {
-                stored_spring_step::<F, M>(&self.0, state, contact, ($slide, $keep), Some(turned))
-            }
-
-            fn stored_energy(&self, state: &SpringDisplacement<F>) -> F {
-                F::HALF * self.0.stiffness() * state.displacement.norm_squared()
-            }
-
-            fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
-                let oscillator = &design.oscillator;
-                self.0.spring_critical_step(oscillator, tangential_mass)
-            }
-        }
-    };
+    fn critical_spring_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        self.spring_critical_step(&design.oscillator, tangential_mass)
+    }
 }
 
 /// Model A (Cundall & Strack 1979): a sliding contact pushes along the trial force, and the
@@ -147,7 +112,7 @@ macro_rules! stored_spring_model {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelA<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(ModelA, Slide::AlongTrial, Keep::Everything);
+stored_spring_model!(ModelA(TangentialParameters) -> SpringDisplacement, Slide::AlongTrial, Keep::Everything);
 
 /// Model B (Tsuji et al. 1992): a sliding contact pushes against the slip velocity, and the
 /// stored displacement keeps growing while it slides. It locks at rigid-body rolling (5/7) at
@@ -155,7 +120,7 @@ stored_spring_model!(ModelA, Slide::AlongTrial, Keep::Everything);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelB<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(ModelB, Slide::AgainstSlip, Keep::Everything);
+stored_spring_model!(ModelB(TangentialParameters) -> SpringDisplacement, Slide::AgainstSlip, Keep::Everything);
 
 /// Model AA (Elghannay & Tafti's proper implementation): Model A's sliding force, with the stored
 /// displacement limited to `mu |F_n| / k_t` after every sliding step, as a deformation must be.
@@ -165,7 +130,7 @@ stored_spring_model!(ModelB, Slide::AgainstSlip, Keep::Everything);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelAA<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(ModelAA, Slide::AlongTrial, Keep::Capped);
+stored_spring_model!(ModelAA(TangentialParameters) -> SpringDisplacement, Slide::AlongTrial, Keep::Capped);
 
 /// Model AA with Luding's reset (Luding 2008; LAMMPS `gran/hooke/history`, `pair granular`
 /// `linear_history`): Model A's sliding force, and after a sliding step the stored displacement
@@ -177,7 +142,7 @@ stored_spring_model!(ModelAA, Slide::AlongTrial, Keep::Capped);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelAALuding<F>(pub TangentialParameters<F>);
 
-stored_spring_model!(ModelAALuding, Slide::AlongTrial, Keep::Luding);
+stored_spring_model!(ModelAALuding(TangentialParameters) -> SpringDisplacement, Slide::AlongTrial, Keep::Luding);
 
 #[cfg(test)]
 mod tests {

@@ -9,6 +9,7 @@
 //! a small contact and released at a large one gives back more work than it took
 //! (`docs/physics.md`, section 3.2; the energy test in `host-tests/tests/hertz.rs`).
 
+use super::stored::{Keep, StoredSpring, stored_spring_model};
 use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, coulomb,
     rotate_into_tangent_plane, spring_critical_step,
@@ -102,112 +103,74 @@ impl<F: Float> ContactState for MindlinSpring<F> {
     }
 }
 
-/// What a stored Mindlin law keeps of its spring after a sliding step.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Keep {
-    /// At most `mu |F_n|` of it (the plain cap).
-    Capped,
-    /// The spring whose force with the dashpot's is the sliding force, `F_t + eta_t v_t`
-    /// (Luding 2008).
-    Luding,
-}
+/// Hertz's stored spring: Mindlin's force and the contact radius it was last updated at, rotated
+/// into the current tangent plane, rescaled on unloading, then `F_s += -k_t(a) v_t dt`.
+impl<F: Float> StoredSpring<F> for MindlinParameters<F> {
+    type State = MindlinSpring<F>;
+    const NEEDS_CONTACT_RADIUS: bool = true;
 
-#[inline(always)]
-fn mindlin_step<F: Float, M: MathBackend<F>>(
-    parameters: &MindlinParameters<F>,
-    state: &MindlinSpring<F>,
-    contact: &TangentialInput<F>,
-    keep: Keep,
-    turned: Option<Vec3<F>>,
-) -> TangentialOutput<F, MindlinSpring<F>> {
-    let radius = contact.contact_radius;
-    let rotated =
-        turned.unwrap_or_else(|| rotate_into_tangent_plane::<F, M>(state.force, contact.normal));
-    // Unloading shrinks the spring with the contact (`a < a_prev`); loading does not grow it.
-    let unloaded = if radius < state.contact_radius {
-        rotated * (radius / state.contact_radius)
-    } else {
-        rotated
-    };
-    let stiffness = parameters.stiffness(radius);
-    let spring = unloaded - contact.slip_velocity * (stiffness * contact.time_step);
-    let dashpot = contact.slip_velocity * parameters.dashpot(&contact.oscillator);
-    let limit = parameters.limit(contact);
-    let (force, sliding) = coulomb::<F, M>(
-        spring - dashpot,
-        contact.slip_velocity,
-        limit,
-        Slide::AlongTrial,
-    );
-    let kept = match keep {
-        Keep::Capped if sliding => {
-            let length_squared = spring.norm_squared();
-            if length_squared > limit * limit {
-                spring * (limit * M::inv_sqrt(length_squared))
-            } else {
-                spring
-            }
-        }
-        Keep::Luding if sliding => force + dashpot,
-        _ => spring,
-    };
-    TangentialOutput {
-        force,
-        state: MindlinSpring {
-            force: kept,
-            contact_radius: radius,
-        },
-        sliding,
-    }
-}
-
-/// The slot's behaviour for a law struct declared beside its invocation.
-macro_rules! stored_mindlin_model {
-    ($name:ident, $keep:expr) => {
-        impl<F: Float> TangentialModel<F> for $name<F> {
-            type State = MindlinSpring<F>;
-            const NEEDS_CONTACT_RADIUS: bool = true;
-
-            #[inline(always)]
-            fn force<M: MathBackend<F>>(
-                &self,
-                state: &MindlinSpring<F>,
-                contact: &TangentialInput<F>,
-            ) -> TangentialOutput<F, MindlinSpring<F>> {
-                mindlin_step::<F, M>(&self.0, state, contact, $keep, None)
-            }
-
-            const TURNS: bool = true;
-
-            #[inline(always)]
-            fn stored_vector(state: &MindlinSpring<F>) -> Vec3<F> {
-                state.force
-            }
-
-            #[inline(always)]
-            fn force_turned<M: MathBackend<F>>(
-                &self,
-                state: &MindlinSpring<F>,
-                contact: &TangentialInput<F>,
-                turned: Vec3<F>,
-            ) -> TangentialOutput<F, MindlinSpring<F>> {
-                mindlin_step::<F, M>(&self.0, state, contact, $keep, Some(turned))
-            }
-
-            fn stored_energy(&self, state: &MindlinSpring<F>) -> F {
-                let stiffness = self.0.stiffness(state.contact_radius);
-                if stiffness > F::ZERO {
-                    state.force.norm_squared() / (F::TWO * stiffness)
+    #[inline(always)]
+    fn step<M: MathBackend<F>>(
+        &self,
+        state: &MindlinSpring<F>,
+        contact: &TangentialInput<F>,
+        (slide, keep): (Slide, Keep),
+        turned: Option<Vec3<F>>,
+    ) -> TangentialOutput<F, MindlinSpring<F>> {
+        let radius = contact.contact_radius;
+        let rotated = turned
+            .unwrap_or_else(|| rotate_into_tangent_plane::<F, M>(state.force, contact.normal));
+        // Unloading shrinks the spring with the contact (`a < a_prev`); loading does not grow it.
+        let unloaded = if radius < state.contact_radius {
+            rotated * (radius / state.contact_radius)
+        } else {
+            rotated
+        };
+        let stiffness = self.stiffness(radius);
+        let spring = unloaded - contact.slip_velocity * (stiffness * contact.time_step);
+        let dashpot = contact.slip_velocity * self.dashpot(&contact.oscillator);
+        let limit = self.limit(contact);
+        let (force, sliding) =
+            coulomb::<F, M>(spring - dashpot, contact.slip_velocity, limit, slide);
+        let kept = match keep {
+            Keep::Capped if sliding => {
+                let length_squared = spring.norm_squared();
+                if length_squared > limit * limit {
+                    spring * (limit * M::inv_sqrt(length_squared))
                 } else {
-                    F::ZERO
+                    spring
                 }
             }
-
-            fn critical_time_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
-                self.0.critical_step(design, tangential_mass)
-            }
+            Keep::Luding if sliding => force + dashpot,
+            _ => spring,
+        };
+        TangentialOutput {
+            force,
+            state: MindlinSpring {
+                force: kept,
+                contact_radius: radius,
+            },
+            sliding,
         }
-    };
+    }
+
+    #[inline(always)]
+    fn stored_vector(state: &MindlinSpring<F>) -> Vec3<F> {
+        state.force
+    }
+
+    fn stored_energy(&self, state: &MindlinSpring<F>) -> F {
+        let stiffness = self.stiffness(state.contact_radius);
+        if stiffness > F::ZERO {
+            state.force.norm_squared() / (F::TWO * stiffness)
+        } else {
+            F::ZERO
+        }
+    }
+
+    fn critical_spring_step(&self, design: &NormalContact<F>, tangential_mass: F) -> F {
+        self.critical_step(design, tangential_mass)
+    }
 }
 
 /// Hertz-Mindlin with Model AA's plain cap: Mindlin's spring `k_t = 8 G* a`, stored as a force
@@ -217,7 +180,7 @@ macro_rules! stored_mindlin_model {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MindlinAA<F>(pub MindlinParameters<F>);
 
-stored_mindlin_model!(MindlinAA, Keep::Capped);
+stored_spring_model!(MindlinAA(MindlinParameters) -> MindlinSpring, Slide::AlongTrial, Keep::Capped);
 
 /// Hertz-Mindlin with Luding's reset: as [`MindlinAA`], but after a sliding step the stored
 /// spring is set so that spring plus dashpot equal the sliding force (LAMMPS `pair granular
@@ -226,7 +189,7 @@ stored_mindlin_model!(MindlinAA, Keep::Capped);
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MindlinAALuding<F>(pub MindlinParameters<F>);
 
-stored_mindlin_model!(MindlinAALuding, Keep::Luding);
+stored_spring_model!(MindlinAALuding(MindlinParameters) -> MindlinSpring, Slide::AlongTrial, Keep::Luding);
 
 /// The stateless law under Hertz: `xi = v_t t_e` with Mindlin's stiffness at the current contact
 /// radius, then Model AA's limit and sliding rule. Stores nothing. `t_e` comes from the contact's

@@ -32,6 +32,7 @@ mod micro_slip;
 mod mindlin;
 mod model_c;
 mod stateless;
+mod stored;
 
 pub use frictionless::Frictionless;
 pub(crate) use history::rotate_into_tangent_plane;
