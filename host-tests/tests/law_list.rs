@@ -95,8 +95,8 @@ fn places() -> Vec<Place> {
     let all: fn(&Law) -> bool = |_| true;
     vec![
         Place {
-            what: "kernel/src/laws.rs: the aliases",
-            text: read("kernel/src/laws.rs"),
+            what: "kernel/src/law/laws.rs: the aliases",
+            text: read("kernel/src/law/laws.rs"),
             takes: all,
             names: |l| format!("pub type {}<", l.alias),
         },
@@ -241,7 +241,7 @@ fn the_c_abi_names_each_law_as_the_list_does() {
 fn the_list_holds_every_alias_and_every_c_abi_law() {
     let laws = list();
     let known = |alias: &str| laws.iter().any(|l| l.alias == alias);
-    for line in read("kernel/src/laws.rs").lines() {
+    for line in read("kernel/src/law/laws.rs").lines() {
         if let Some(rest) = line.strip_prefix("pub type ") {
             let alias = &rest[..rest.find('<').expect("an alias is generic")];
             // A family (`LinearLaw<F, T, ..>`) leaves the tangential slot open: no law.

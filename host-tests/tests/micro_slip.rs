@@ -5,7 +5,7 @@
 use host_tests::analytic::{cattaneo_mindlin, cycle_dissipation, mindlin_deresiewicz_unloading};
 use host_tests::random::Xorshift;
 use host_tests::validation::micro_slip::ShearBed;
-use soft_sphere::tangential::TangentialInput;
+use soft_sphere::TangentialInput;
 use soft_sphere::{
     Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialModel, Vec3,
 };

@@ -1,6 +1,6 @@
-//! The import graph of the kernel, the C ABI and the scene: which top-level module names which
-//! (directly, `crate::module::...`, or through the crate root's re-exports, `crate::Name` and
-//! `use crate::*`), with no cycle, so that each module can be read, tested and moved after the
+//! The import graph of the kernel, the C ABI and the scene: which module names which (directly,
+//! `crate::module::...` or `crate::folder::module::...`, or through the crate root's re-exports,
+//! `crate::Name` and `use crate::*`), with no cycle, so that each module can be read, tested and moved after the
 //! ones it builds on.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -54,31 +54,71 @@ fn tokens(code: &str) -> Vec<String> {
     out
 }
 
-/// Each top-level module of `src` and the files it is made of.
+/// The `.rs` files under `dir`, at any depth.
+fn files_under(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in fs::read_dir(dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|e| e == "rs") {
+                files.push(p);
+            }
+        }
+    }
+    files
+}
+
+/// Each module of `src` and the files it is made of: a top-level file or folder, or, for a
+/// folder of concerns (one whose `mod.rs` only declares its modules, as the kernel's `law/`,
+/// `seam/` and `value/`), each module in it, named `folder::module`.
 fn modules(src: &Path) -> BTreeMap<String, Vec<PathBuf>> {
     let mut out = BTreeMap::new();
     for entry in fs::read_dir(src).unwrap() {
         let path = entry.unwrap().path();
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         if path.is_dir() {
-            let mut files = Vec::new();
-            let mut stack = vec![path];
-            while let Some(dir) = stack.pop() {
-                for entry in fs::read_dir(dir).unwrap() {
-                    let p = entry.unwrap().path();
-                    if p.is_dir() {
-                        stack.push(p);
-                    } else if p.extension().is_some_and(|e| e == "rs") {
-                        files.push(p);
-                    }
+            let declares_only = defined(&[path.join("mod.rs")]).is_empty();
+            if !declares_only {
+                out.insert(name, files_under(&path));
+                continue;
+            }
+            for entry in fs::read_dir(&path).unwrap() {
+                let inner = entry.unwrap().path();
+                let child = inner.file_stem().unwrap().to_string_lossy().to_string();
+                if inner.is_dir() {
+                    out.insert(format!("{name}::{child}"), files_under(&inner));
+                } else if inner.extension().is_some_and(|e| e == "rs") && child != "mod" {
+                    out.insert(format!("{name}::{child}"), vec![inner]);
                 }
             }
-            out.insert(name, files);
         } else if path.extension().is_some_and(|e| e == "rs") && name != "lib" {
             out.insert(name, vec![path]);
         }
     }
     out
+}
+
+/// The module a path starting at token `k` names (`list`, or `seam :: list` in a folder of
+/// concerns), and the number of tokens it spans.
+fn module_at(
+    t: &[String],
+    k: usize,
+    modules: &BTreeMap<String, Vec<PathBuf>>,
+) -> Option<(String, usize)> {
+    let first = t.get(k)?;
+    if modules.contains_key(first) {
+        return Some((first.clone(), 1));
+    }
+    if t.get(k + 1).map(String::as_str) == Some("::") {
+        let nested = format!("{first}::{}", t.get(k + 2)?);
+        if modules.contains_key(&nested) {
+            return Some((nested, 3));
+        }
+    }
+    None
 }
 
 /// The items a module defines at its top level (or in the macros that make them): types,
@@ -121,21 +161,25 @@ fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<
         .map(|name| (name, "lib".to_string()))
         .collect();
     for k in 0..t.len() {
-        if t[k] != "use" || k + 3 >= t.len() || !modules.contains_key(&t[k + 1]) {
+        if t[k] != "use" {
             continue;
         }
-        let module = &t[k + 1];
-        if t[k + 2] != "::" {
+        let Some((module, span)) = module_at(&t, k + 1, modules) else {
+            continue;
+        };
+        let at = k + 1 + span;
+        if at + 1 >= t.len() || t[at] != "::" {
             continue;
         }
-        match t[k + 3].as_str() {
+        let module = &module;
+        match t[at + 1].as_str() {
             "*" => {
                 for name in defined(&modules[module]) {
                     out.entry(name).or_insert_with(|| module.clone());
                 }
             }
             "{" => {
-                for token in t[k + 4..].iter().take_while(|x| *x != "}") {
+                for token in t[at + 2..].iter().take_while(|x| *x != "}") {
                     if token.chars().all(|c| c.is_alphanumeric() || c == '_') {
                         out.insert(token.clone(), module.clone());
                     }
@@ -190,12 +234,18 @@ fn graph(src: &Path) -> Graph {
             // or the root's own scope).
             for k in 0..t.len().saturating_sub(1) {
                 let head = k == 0 || t[k - 1] != "::";
-                if head && t[k + 1] == "::" && modules.contains_key(&t[k]) {
-                    add(&t[k], &mut deps);
+                if let Some((named, span)) = module_at(&t, k, &modules).filter(|_| head) {
+                    if t.get(k + span).map(String::as_str) == Some("::") {
+                        add(&named, &mut deps);
+                    }
                 }
             }
             for k in 0..t.len().saturating_sub(2) {
                 if t[k] != "crate" || t[k + 1] != "::" {
+                    continue;
+                }
+                if let Some((named, _)) = module_at(&t, k + 2, &modules) {
+                    add(&named, &mut deps);
                     continue;
                 }
                 match t[k + 2].as_str() {
@@ -302,16 +352,20 @@ fn the_kernel_the_c_abi_and_the_scene_have_no_module_cycle() {
 fn the_scan_sees_each_way_of_naming_and_the_search_finds_a_cycle() {
     let graph = graph(&crate_src("kernel/src"));
     let names = |m: &str| graph[m].iter().cloned().collect::<Vec<_>>();
-    // `use crate::engine::{BoundLaw, Law}` (a module path) and `crate::forces::...`.
-    assert!(names("law").contains(&"engine".to_string()));
-    assert!(names("law").contains(&"forces".to_string()));
+    let (law, engine, forces) = ("law::contact_law", "law::engine", "value::forces");
+    // `use crate::law::engine::{BoundLaw, Law}` (a module path in a folder of concerns) and
+    // `crate::value::forces::...`.
+    assert!(names(law).contains(&engine.to_string()), "{:?}", names(law));
+    assert!(names(law).contains(&forces.to_string()));
     // A link to `crate::Frictionless` in a comment is not an import.
-    assert!(!names("forces").contains(&"tangential".to_string()));
+    assert!(!names(forces).contains(&"law::tangential".to_string()));
+    // A folder inside a folder of concerns is one module.
+    assert!(graph.contains_key("law::tangential") && !graph.contains_key("law"));
     let mut looped = graph.clone();
-    looped.get_mut("forces").unwrap().insert("law".to_string());
+    looped.get_mut(forces).unwrap().insert(law.to_string());
     let found = cycle(&looped).expect("forces -> law -> forces");
     assert_eq!(found.first(), found.last());
-    assert!(found.contains(&"forces".to_string()) && found.contains(&"law".to_string()));
+    assert!(found.contains(&forces.to_string()) && found.contains(&law.to_string()));
     // Through the root: a `use crate::*` module names what it uses of the root's
     // (`forces_of`, the handles'), and a module path it reaches that way (`list::`).
     let abi = graph_of("examples/c-abi/src");

@@ -704,7 +704,7 @@ fn model_aa_cuts_its_spring_only_when_the_contact_slides() {
 /// compare equal) still slide at the limit, along the trial force.
 #[test]
 fn forces_too_large_to_square_still_meet_coulomb() {
-    use soft_sphere::tangential::TangentialInput;
+    use soft_sphere::TangentialInput;
     use soft_sphere::{Libm, NormalOscillator, TangentialModel};
     let law = ModelAA(TangentialParameters::new(1e10_f64, 0.0, 0.3).unwrap());
     let state = SpringDisplacement {

@@ -8,16 +8,16 @@
 
 use arbitrary::{Arbitrary, Error, Result, Unstructured};
 
-use crate::body::Sphere;
-use crate::float::Float;
-use crate::material::Material;
-use crate::normal::{Hertz, HertzImpact, LinearSpringDashpot};
-use crate::rolling::RollingSpring;
-use crate::tangential::{
+use crate::law::normal::{Hertz, HertzImpact, LinearSpringDashpot};
+use crate::law::rolling::RollingSpring;
+use crate::law::tangential::{
     MicroSlipSprings, MindlinParameters, MindlinSpring, SpringDisplacement, TangentialParameters,
 };
-use crate::vector::Vec3;
-use crate::wall::Wall;
+use crate::value::body::Sphere;
+use crate::value::float::Float;
+use crate::value::material::Material;
+use crate::value::vector::Vec3;
+use crate::value::wall::Wall;
 
 impl<'a, F: Float + Arbitrary<'a>> Arbitrary<'a> for Vec3<F> {
     fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {

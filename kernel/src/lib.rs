@@ -130,7 +130,7 @@
 //!   of a list the one-contact bits with its pair of materials' law, adds the forces in list
 //!   order, and on an error puts every state and force back and names the sphere, pair or wall;
 //!   [`MaterialTable::time_step`] checks the step against every pair of materials present;
-//!   [`MaterialTable::evaluate_on`] spreads the pairs over a caller's [`Executor`]'s threads
+//!   [`MaterialTable::evaluate_on`] spreads the pairs over a caller's [`Executor`](executor::Executor)'s threads
 //!   with the same bits, states, records and errors. (`material_list.rs`)
 //! - **Rest.** A sphere resting on a plate for 10^6 steps does not drift or gain energy; a stored
 //!   spring holds a sphere on an incline below the friction angle, the stateless law lets it creep
@@ -166,7 +166,7 @@
 //! [`MaterialTable::evaluate`] takes an engine's own spheres (as arrays, [`SphereArrays`], or one
 //! array of checked spheres, [`SphereSlice`]), its pair list with any periodic shifts and its
 //! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
-//! An engine with threads implements [`Executor`] and calls [`MaterialTable::evaluate_on`] with
+//! An engine with threads implements [`Executor`](executor::Executor) and calls [`MaterialTable::evaluate_on`] with
 //! one [`PairLoad`] per pair as working memory: stretches of the list are evaluated on its
 //! threads and their loads added in list order on one, so the sums are the one-thread bits.
 //! [`ContactLaw::stored_energy`] says what a contact's springs hold, for energy accounts.
@@ -194,80 +194,57 @@
 #[cfg(feature = "std")]
 extern crate std;
 
-mod backend;
-mod body;
-mod checked;
-pub mod checks;
-mod engine;
-mod error;
-pub mod executor;
-mod float;
-mod forces;
 #[cfg(feature = "arbitrary")]
 mod fuzz_inputs;
-mod geometry;
 mod law;
-mod laws;
-mod list;
-mod list_error;
-mod material;
-mod mixing;
-pub mod motion;
-mod normal;
-mod pair_check;
-mod pairs;
-pub mod rolling;
-mod rotation;
-mod sifted;
-mod spheres;
-mod spread;
-mod stats;
-mod store;
+mod seam;
 #[cfg(feature = "proptest")]
 pub mod strategies;
-mod table;
-pub mod tangential;
-mod time_step;
-mod vector;
-mod wall;
+mod value;
 
-#[cfg(feature = "std")]
-pub use backend::Std;
-pub use backend::{Libm, MathBackend, Micromath};
-pub use body::{Sphere, effective_mass};
-pub use checked::CheckedSphere;
-pub use engine::{BoundLaw, Law};
-pub use error::{ContactError, Parameter, ParameterError};
-pub use executor::{Executor, Serial};
-pub use float::Float;
-pub use forces::{ContactForces, Interaction};
-pub use geometry::LeverArm;
-pub use law::ContactLaw;
-pub use laws::{
+pub use law::checks;
+pub use seam::executor;
+pub use value::motion;
+
+pub use law::contact_law::ContactLaw;
+pub use law::engine::{BoundLaw, Law};
+pub use law::geometry::LeverArm;
+pub use law::laws::{
     HertzAA, HertzAALuding, HertzFrictionless, HertzLaw, HertzMicroSlip, HertzStateless, LinearAA,
     LinearAALuding, LinearFrictionless, LinearLaw, LinearStateless,
 };
-pub use list::{ContactList, ListOutput, MaterialWall};
-pub use list_error::{ListArray, ListError};
-pub use material::Material;
-pub use mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
-pub use normal::{
+pub use law::mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
+pub use law::normal::{
     Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
     NormalOscillator,
 };
-pub use pair_check::{CheckedPairs, PairList, check_pairs};
-pub use rolling::{ConstantRolling, ElasticPlasticRolling, NoRolling, RollingModel, RollingSpring};
-pub use rotation::{NonRotating, Rotating, Rotation};
-pub use spheres::{SphereArrays, SphereSlice, Spheres};
-pub use spread::PairLoad;
-pub use stats::ListStats;
-pub use store::{ContactHistory, ContactKey};
-pub use table::{MaterialTable, TableError};
-pub use tangential::{
+pub use law::rolling::{
+    ConstantRolling, ElasticPlasticRolling, NoRolling, RollingInput, RollingModel, RollingSpring,
+};
+pub use law::rotation::{NonRotating, Rotating, Rotation};
+pub use law::tangential::{
     ContactState, Frictionless, MicroSlip, MicroSlipSprings, MindlinAA, MindlinAALuding,
     MindlinParameters, MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB,
-    ModelC, SpringDisplacement, Stateless, TangentialModel, TangentialParameters,
+    ModelC, SpringDisplacement, Stateless, TangentialInput, TangentialModel, TangentialOutput,
+    TangentialParameters,
 };
-pub use time_step::TimeStep;
-pub use vector::Vec3;
-pub use wall::{Wall, WallShape};
+pub use seam::list::{ContactList, ListOutput, MaterialWall};
+pub use seam::list_error::{ListArray, ListError};
+pub use seam::pair_check::{CheckedPairs, PairList, check_pairs};
+pub use seam::spheres::{SphereArrays, SphereSlice, Spheres};
+pub use seam::spread::PairLoad;
+pub use seam::stats::ListStats;
+pub use seam::store::{ContactHistory, ContactKey};
+pub use seam::table::{MaterialTable, TableError};
+#[cfg(feature = "std")]
+pub use value::backend::Std;
+pub use value::backend::{Libm, MathBackend, Micromath};
+pub use value::body::{Sphere, effective_mass};
+pub use value::checked::CheckedSphere;
+pub use value::error::{ContactError, Parameter, ParameterError};
+pub use value::float::Float;
+pub use value::forces::{ContactForces, Interaction};
+pub use value::material::Material;
+pub use value::time_step::TimeStep;
+pub use value::vector::Vec3;
+pub use value::wall::{Wall, WallShape};

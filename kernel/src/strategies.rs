@@ -2,7 +2,7 @@
 //! `proptest`): physical collisions, spheres, walls, every slot's parameters, and arbitrary bit
 //! patterns, in `f32` and `f64`. The kernel's own property tests draw from these; an engine
 //! author draws from them to fuzz a loop around the kernel, and asserts with
-//! [`checks`](crate::checks).
+//! [`checks`](crate::law::checks).
 //!
 //! Physical cases are drawn in `f64` and rounded to the precision under test, so `f32` and `f64`
 //! meet the same situations. Every range is stated where it is drawn.
@@ -21,13 +21,13 @@ use core::ops::RangeInclusive;
 
 use proptest::prelude::*;
 
-use crate::body::Sphere;
-use crate::float::Float;
-use crate::normal::{Hertz, HertzImpact, LinearSpringDashpot};
-use crate::rolling::{ConstantRolling, ElasticPlasticRolling};
-use crate::tangential::{MindlinParameters, TangentialParameters};
-use crate::vector::Vec3;
-use crate::wall::Wall;
+use crate::law::normal::{Hertz, HertzImpact, LinearSpringDashpot};
+use crate::law::rolling::{ConstantRolling, ElasticPlasticRolling};
+use crate::law::tangential::{MindlinParameters, TangentialParameters};
+use crate::value::body::Sphere;
+use crate::value::float::Float;
+use crate::value::vector::Vec3;
+use crate::value::wall::Wall;
 
 /// A value drawn log-uniformly from `[low, high]` (both positive).
 pub fn log_uniform(low: f64, high: f64) -> impl Strategy<Value = f64> + Clone {

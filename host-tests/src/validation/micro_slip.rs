@@ -3,8 +3,8 @@
 //! (`microslip_loops.csv`).
 
 use soft_sphere::{
-    Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialModel, Vec3,
-    tangential::TangentialInput,
+    Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialInput,
+    TangentialModel, Vec3,
 };
 
 use super::{CaseOutput, Table};
