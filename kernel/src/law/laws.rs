@@ -23,23 +23,23 @@ pub type HertzLaw<F, T, M = <F as Float>::DefaultBackend, R = Rotating, Ro = NoR
     ContactLaw<F, Hertz<F>, T, M, R, Ro>;
 
 /// The linear spring-dashpot with Model AA's limited tangential spring.
-pub type LinearAA<F> = ContactLaw<F, LinearSpringDashpot<F>, ModelAA<F>>;
+pub type LinearAA<F> = LinearLaw<F, ModelAA<F>>;
 /// The linear spring-dashpot with Model AA and Luding's reset of the spring on sliding.
-pub type LinearAALuding<F> = ContactLaw<F, LinearSpringDashpot<F>, ModelAALuding<F>>;
+pub type LinearAALuding<F> = LinearLaw<F, ModelAALuding<F>>;
 /// The linear spring-dashpot with the simplified law that stores no tangential history.
-pub type LinearStateless<F> = ContactLaw<F, LinearSpringDashpot<F>, Stateless<F>>;
+pub type LinearStateless<F> = LinearLaw<F, Stateless<F>>;
 /// The linear spring-dashpot without friction.
-pub type LinearFrictionless<F> = ContactLaw<F, LinearSpringDashpot<F>, Frictionless>;
+pub type LinearFrictionless<F> = LinearLaw<F, Frictionless>;
 /// Hertz with Mindlin's tangential spring, limited as Model AA.
-pub type HertzAA<F> = ContactLaw<F, Hertz<F>, MindlinAA<F>>;
+pub type HertzAA<F> = HertzLaw<F, MindlinAA<F>>;
 /// Hertz with Mindlin's tangential spring, limited as Model AA with Luding's reset.
-pub type HertzAALuding<F> = ContactLaw<F, Hertz<F>, MindlinAALuding<F>>;
+pub type HertzAALuding<F> = HertzLaw<F, MindlinAALuding<F>>;
 /// Hertz with the simplified tangential law at Mindlin's stiffness.
-pub type HertzStateless<F> = ContactLaw<F, Hertz<F>, MindlinStateless<F>>;
+pub type HertzStateless<F> = HertzLaw<F, MindlinStateless<F>>;
 /// Hertz without friction.
-pub type HertzFrictionless<F> = ContactLaw<F, Hertz<F>, Frictionless>;
-/// Hertz with Mindlin and Deresiewicz's micro-slip over `SPRINGS` cells.
-pub type HertzMicroSlip<F, const SPRINGS: usize> = ContactLaw<F, Hertz<F>, MicroSlip<F, SPRINGS>>;
+pub type HertzFrictionless<F> = HertzLaw<F, Frictionless>;
+/// Hertz with Mindlin and Deresiewicz's micro-slip, its profile in up to `SPRINGS` breakpoints.
+pub type HertzMicroSlip<F, const SPRINGS: usize> = HertzLaw<F, MicroSlip<F, SPRINGS>>;
 
 /// Calls `$callback!` with every law named above, one entry each, in this form:
 /// `Alias = "name", NormalSlot, TangentialSlot;`. This is the one list of the named laws: the
