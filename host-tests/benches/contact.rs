@@ -179,7 +179,7 @@ macro_rules! micro_slip_laws {
         let with = |name: &str| format!("micro_slip/{name}/{}", $label);
         bench_law(
             $c,
-            &with("model_aa"),
+            &with("aa"),
             ContactLaw::new(
                 LinearSpringDashpot::new(1000.0 as $F, 0.9 as $F).unwrap(),
                 ModelAA(TangentialParameters::new(285.7 as $F, 0.5 as $F, 0.5 as $F).unwrap()),
@@ -187,7 +187,7 @@ macro_rules! micro_slip_laws {
         );
         bench_law(
             $c,
-            &with("hertz_mindlin_aa"),
+            &with("hertz/aa"),
             ContactLaw::new(hertz, MindlinAA(mindlin)),
         );
         bench_law(
@@ -221,14 +221,10 @@ fn micro_slip(c: &mut Criterion) {
 fn skipping(c: &mut Criterion) {
     let normal = LinearSpringDashpot::new(1000.0f64, 0.9).unwrap();
     let p = TangentialParameters::new(285.7f64, 0.5, 0.5).unwrap();
+    bench_law(c, "skip/full_aa_f64", ContactLaw::new(normal, ModelAA(p)));
     bench_law(
         c,
-        "skip/full_model_aa_f64",
-        ContactLaw::new(normal, ModelAA(p)),
-    );
-    bench_law(
-        c,
-        "skip/non_rotating_model_aa_f64",
+        "skip/non_rotating_aa_f64",
         ContactLaw::new(normal, ModelAA(p)).without_rotation(),
     );
     bench_law(
@@ -239,7 +235,7 @@ fn skipping(c: &mut Criterion) {
     let undamped = TangentialParameters::new(285.7f64, 0.0, 0.5).unwrap();
     bench_law(
         c,
-        "skip/undamped_model_aa_f64",
+        "skip/undamped_aa_f64",
         ContactLaw::new(LinearSpring::new(1000.0f64).unwrap(), ModelAA(undamped)),
     );
     // What a scene without walls saves: one wall check per sphere and step, for the spheres away
@@ -301,7 +297,7 @@ fn paths(c: &mut Criterion) {
     let mut group = c.benchmark_group("contact");
     group.throughput(Throughput::Elements(BATCH as u64));
     let mut states = [Default::default(); BATCH];
-    group.bench_function("path/unbound_model_aa_f64", |b| {
+    group.bench_function("path/unbound_aa_f64", |b| {
         b.iter(|| {
             let mut sum = 0.0;
             for ((i, j), state) in pairs.iter().zip(states.iter_mut()) {
@@ -312,7 +308,7 @@ fn paths(c: &mut Criterion) {
             black_box(sum)
         });
     });
-    group.bench_function("path/bound_checking_spheres_model_aa_f64", |b| {
+    group.bench_function("path/bound_checking_spheres_aa_f64", |b| {
         b.iter(|| {
             let mut bound = law.at(dt);
             let mut sum = 0.0;
@@ -330,7 +326,7 @@ fn paths(c: &mut Criterion) {
             black_box(sum)
         });
     });
-    group.bench_function("path/bound_model_aa_f64", |b| {
+    group.bench_function("path/bound_aa_f64", |b| {
         b.iter(|| {
             let mut bound = law.at(dt);
             let mut sum = 0.0;

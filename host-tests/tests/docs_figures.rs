@@ -10,8 +10,9 @@ fn read(path: &Path) -> String {
     fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-/// The figures of `text`: runs of digits with a decimal point (`0.039`, `553.7`) or an exponent
-/// (`1e-3`, `1e-9`), with any thousands separators kept (`13.12`, not `13`).
+/// The figures of `text`: numbers with a decimal point (`0.039`, `553.7`) or an exponent
+/// (`1e-3`, `1e-9`), read whole (`13.12`, not `13`); whole numbers (`10,000`) and dates are not
+/// figures here.
 fn figures(text: &str) -> Vec<String> {
     let bytes = text.as_bytes();
     let mut found = Vec::new();

@@ -66,7 +66,8 @@ fn section(path: &str, start: &str, end: &str) -> String {
     let rest = &text[from..];
     let to = rest[start.len()..]
         .find(end)
-        .map_or(rest.len(), |i| i + start.len());
+        .unwrap_or_else(|| panic!("{path}: no `{end}` after `{start}`"))
+        + start.len();
     rest[..to].to_string()
 }
 
@@ -234,6 +235,21 @@ fn the_c_abi_names_each_law_as_the_list_does() {
             law.alias,
             law.name
         );
+        // Its family and its slot (a tables-only law names its table's mixing rule instead).
+        let family = if law.linear() {
+            ", linear, "
+        } else {
+            ", hertz, "
+        };
+        let slot = has_word(line, law.tangential)
+            || line.contains(&format!(", {}Mixing<", law.tangential));
+        assert!(
+            line.contains(family) && slot,
+            "registry.rs gives {} another family or slot than the list ({}, {}): {line}",
+            law.alias,
+            law.normal,
+            law.tangential
+        );
     }
 }
 
@@ -272,10 +288,61 @@ fn the_list_holds_every_alias_and_every_c_abi_law() {
 
 #[test]
 fn the_benchmarks_time_the_list() {
+    let bench = read("host-tests/benches/contact.rs");
     assert!(
-        read("host-tests/benches/contact.rs").contains("soft_sphere::for_each_law!(named_laws)"),
+        bench.contains("soft_sphere::for_each_law!(named_laws)"),
+        "benches/contact.rs no longer builds its timings from the list"
+    );
+    let every_law = section(
+        "host-tests/benches/contact.rs",
+        "macro_rules! every_law {",
+        "\n}\n",
+    );
+    assert!(
+        every_law.contains("every_named_law!("),
         "benches/contact.rs no longer times the list's laws"
     );
+}
+
+/// The tangential slot's type in `f64` (micro-slip at 16 breakpoints).
+macro_rules! slot_type {
+    (Frictionless) => {
+        soft_sphere::Frictionless
+    };
+    (MicroSlip) => {
+        soft_sphere::MicroSlip<f64, 16>
+    };
+    ($tangential:ident) => {
+        soft_sphere::$tangential<f64>
+    };
+}
+
+/// The alias's type in `f64`.
+macro_rules! alias_type {
+    (HertzMicroSlip) => {
+        soft_sphere::HertzMicroSlip<f64, 16>
+    };
+    ($alias:ident) => {
+        soft_sphere::$alias<f64>
+    };
+}
+
+/// Compiles only where each entry's alias is the law its slots make.
+macro_rules! aliases_are_their_slots {
+    ($($alias:ident = $name:literal, $normal:ident, $tangential:ident;)*) => {
+        fn same_type<T>(_: Option<T>, _: Option<T>) {}
+        $(
+            same_type(
+                None::<alias_type!($alias)>,
+                None::<soft_sphere::ContactLaw<f64, soft_sphere::$normal<f64>, slot_type!($tangential)>>,
+            );
+        )*
+    };
+}
+
+#[test]
+fn each_alias_is_the_law_its_entry_names() {
+    soft_sphere::for_each_law!(aliases_are_their_slots);
 }
 
 #[test]

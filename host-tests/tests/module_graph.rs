@@ -80,7 +80,18 @@ fn modules(src: &Path) -> BTreeMap<String, Vec<PathBuf>> {
         let path = entry.unwrap().path();
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         if path.is_dir() {
-            let declares_only = defined(&[path.join("mod.rs")]).is_empty();
+            // Only `mod`, `use` and attribute lines (and comments, which `code` drops).
+            let declares_only = code(&path.join("mod.rs")).lines().all(|line| {
+                let line = line.trim();
+                let bare = ["pub(crate) ", "pub "]
+                    .iter()
+                    .find_map(|p| line.strip_prefix(p))
+                    .unwrap_or(line);
+                line.is_empty()
+                    || line.starts_with('#')
+                    || bare.starts_with("mod ")
+                    || bare.starts_with("use ")
+            });
             if !declares_only {
                 out.insert(name, files_under(&path));
                 continue;
@@ -168,6 +179,12 @@ fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<
             continue;
         };
         let at = k + 1 + span;
+        // `use law::checks;`: the root names a module itself.
+        if t.get(at).map(String::as_str) == Some(";") {
+            let last = module.rsplit("::").next().unwrap_or(&module).to_string();
+            out.insert(last, module.clone());
+            continue;
+        }
         if at + 1 >= t.len() || t[at] != "::" {
             continue;
         }
@@ -237,6 +254,12 @@ fn graph(src: &Path) -> Graph {
                 if let Some((named, span)) = module_at(&t, k, &modules).filter(|_| head) {
                     if t.get(k + span).map(String::as_str) == Some("::") {
                         add(&named, &mut deps);
+                    }
+                } else if head && t[k + 1] == "::" {
+                    // A module the root names (`checks::coulomb` through `pub use law::checks`).
+                    let module_itself = |m: &&String| m.rsplit("::").next() == Some(t[k].as_str());
+                    if let Some(m) = names.get(&t[k]).filter(module_itself) {
+                        deps.insert(m.clone());
                     }
                 }
             }

@@ -127,8 +127,9 @@
 //!   [tolerates](TimeStep::tolerating_unstable_contacts) them. (`unstable_contacts.rs`,
 //!   `scene.rs`)
 //! - **Whole lists are one contact at a time.** [`MaterialTable::evaluate`] gives each contact
-//!   of a list the one-contact bits with its pair of materials' law, adds the forces in list
-//!   order, and on an error puts every state and force back and names the sphere, pair or wall;
+//!   of a list the one-contact bits with its pair of materials' law, writes each sphere's force as
+//!   its contacts' sum in list order and the next states beside the ones it read, and on an error
+//!   leaves the states it read as they were and names the sphere, pair or wall;
 //!   [`MaterialTable::time_step`] checks the step against every pair of materials present;
 //!   [`MaterialTable::evaluate_on`] spreads the pairs over a caller's [`Executor`](executor::Executor)'s threads
 //!   with the same bits, states, records and errors. (`material_list.rs`)
@@ -138,7 +139,7 @@
 //! - **Pay for what you use.** [`Frictionless`], [`NonRotating`] and [`Rotating`] are zero-sized;
 //!   [`Stateless`], [`ModelC`], [`MindlinStateless`] and [`Frictionless`] keep no per-contact
 //!   state; the stored-spring laws keep three floats, the stored Mindlin laws four, the
-//!   micro-slip law `3 SPRINGS + 4`. (`layout.rs`, `hertz.rs`)
+//!   micro-slip law `4 SPRINGS + 4`. (`layout.rs`, `hertz.rs`)
 //! - **Hertz rebounds at `e`.** [`Hertz`]'s dashpot is solved from the restitution, so a free
 //!   impact rebounds at `e` (within 0.5 %) at any speed; its force follows Hertz's closed form
 //!   and the Mindlin laws keep the Coulomb limit, create no energy, are symmetric and frame
@@ -165,7 +166,8 @@
 //! each material's properties by a [`Mixing`] rule, any pair overridable), and
 //! [`MaterialTable::evaluate`] takes an engine's own spheres (as arrays, [`SphereArrays`], or one
 //! array of checked spheres, [`SphereSlice`]), its pair list with any periodic shifts and its
-//! walls ([`ContactList`]) and adds the forces into its arrays ([`ListOutput`]), all or nothing.
+//! walls ([`ContactList`]) and writes the forces and the next states into its arrays
+//! ([`ListOutput`]), all or nothing.
 //! An engine with threads implements [`Executor`](executor::Executor) and calls [`MaterialTable::evaluate_on`] with
 //! one [`PairLoad`] per pair as working memory: stretches of the list are evaluated on its
 //! threads and their loads added in list order on one, so the sums are the one-thread bits.

@@ -2,7 +2,7 @@
 //! `proptest`): physical collisions, spheres, walls, every slot's parameters, and arbitrary bit
 //! patterns, in `f32` and `f64`. The kernel's own property tests draw from these; an engine
 //! author draws from them to fuzz a loop around the kernel, and asserts with
-//! [`checks`](crate::law::checks).
+//! [`checks`](crate::checks).
 //!
 //! Physical cases are drawn in `f64` and rounded to the precision under test, so `f32` and `f64`
 //! meet the same situations. Every range is stated where it is drawn.

@@ -20,8 +20,8 @@ use crate::table::{MicroSlipMixing, Rolled, Tabled, elastic, elastic_frictionles
 use crate::table::{linear_frictionless, rolled_elastic, rolled_linear};
 
 /// Calls `$callback!` with every law of the kernel's list (`soft_sphere::for_each_law!`, whose
-/// aliases name the variants; `host-tests/tests/law_list.rs` checks the two agree), in two bracketed parts: the laws handles and tables both
-/// take, then those only tables take. One entry each: its code's documentation, then
+/// aliases name the variants; `host-tests/tests/law_list.rs` checks the two agree), in two
+/// bracketed parts: the laws handles and tables both take, then those only tables take. One entry each: its code's documentation, then
 /// `Variant = SS_MODEL_CODE = value, "name", family, TangentialSlot, tangential;` (a
 /// tables-only law has no name, since no host offers it by name, and names its table's mixing
 /// rule instead of its slot, since no handle holds its law). The family is `linear` (the linear

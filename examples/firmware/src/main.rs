@@ -13,9 +13,9 @@ use cortex_m_semihosting::{debug, hprintln};
 use fixed_loop::BoxScene;
 use panic_semihosting as _;
 use soft_sphere::{
-    ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearLaw, LinearSpringDashpot, ModelA,
-    ModelAA, ModelB, ModelC, Sphere, Stateless, TangentialModel, TangentialParameters, TimeStep,
-    Vec3,
+    ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearLaw, LinearSpringDashpot,
+    ModelA, ModelAA, ModelB, ModelC, Sphere, Stateless, TangentialModel, TangentialParameters,
+    TimeStep, Vec3,
 };
 
 /// Steps of the scene compared with the host.
@@ -79,7 +79,6 @@ fn pair() -> (Sphere<f32>, Sphere<f32>) {
     (i, j)
 }
 
-/// A law of this firmware, by tangential model.
 /// The signature of the per-law contact routines.
 type Routine<T> = fn(
     &LinearLaw<f32, T>,

@@ -114,21 +114,21 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     println!();
     println!(
-        "{:<12} {:>8} {:>14} {:>20} {:>7} {:>8}",
+        "{:<16} {:>8} {:>14} {:>20} {:>7} {:>8}",
         "law", "e_t", "spin (rad/s)", "rebound angle (deg)", "steps", "sliding"
     );
     let p = TangentialParameters::new(TANGENTIAL_STIFFNESS, 0.0, FRICTION)?;
     let rows = [
         ("stateless", impact(Stateless(p), angle_deg)?),
         ("model AA", impact(ModelAA(p), angle_deg)?),
-        ("AA, Luding", impact(ModelAALuding(p), angle_deg)?),
+        ("model AA, Luding", impact(ModelAALuding(p), angle_deg)?),
         ("model A", impact(ModelA(p), angle_deg)?),
         ("model B", impact(ModelB(p), angle_deg)?),
         ("model C", impact(ModelC(p), angle_deg)?),
     ];
     for (name, o) in rows {
         println!(
-            "{name:<12} {:>8.4} {:>14.1} {:>20.2} {:>7} {:>8}",
+            "{name:<16} {:>8.4} {:>14.1} {:>20.2} {:>7} {:>8}",
             o.tangential_restitution,
             o.spin,
             o.rebound_angle_deg,
@@ -137,6 +137,6 @@ fn main() -> Result<(), Box<dyn Error>> {
         );
     }
     let (e_t, spin, angle) = rigid_body(angle_deg);
-    println!("{:<12} {e_t:>8.4} {spin:>14.1} {angle:>20.2}", "rigid body");
+    println!("{:<16} {e_t:>8.4} {spin:>14.1} {angle:>20.2}", "rigid body");
     Ok(())
 }
