@@ -11,7 +11,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use host_tests::pairs::touching_pairs;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ConstantRolling, ContactLaw, ElasticPlasticRolling, Float, Frictionless, Hertz,
     HertzImpact, Interaction, Libm, LinearSpring, LinearSpringDashpot, MathBackend, MicroSlip,
     Micromath, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelA, ModelAA,

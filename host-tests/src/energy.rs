@@ -1,6 +1,6 @@
 //! Kinetic energy of spheres, in f64 whatever the kernel's precision.
 
-use soft_sphere::{Float, Sphere};
+use soft_sphere::prelude::{Float, Sphere};
 
 /// Translational plus rotational kinetic energy of a homogeneous solid sphere (J).
 pub fn kinetic<F: Float>(s: &Sphere<F>) -> f64 {

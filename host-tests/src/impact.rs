@@ -2,7 +2,7 @@
 //! reports what came out. Used by the normal-impact and oblique-impact tests.
 
 use soft_sphere::motion::{advance_solid_sphere, drift, half_kick};
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactForces, Float, Interaction, Law, Sphere, TimeStep, Vec3,
     Wall,
 };

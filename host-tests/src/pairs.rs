@@ -2,7 +2,9 @@
 //! the radius, random directions, velocities and spins (fixed seed), and how to run them through
 //! the kernel one contact at a time.
 
-use soft_sphere::{CheckedSphere, ContactError, Float, Interaction, Law, Sphere, TimeStep, Vec3};
+use soft_sphere::prelude::{
+    CheckedSphere, ContactError, Float, Interaction, Law, Sphere, TimeStep, Vec3,
+};
 
 use crate::random::Xorshift;
 use crate::triple::to_vec3;

@@ -1,6 +1,6 @@
 //! What the tests need to know of a precision that the kernel's `Float` does not carry.
 
-use soft_sphere::Float;
+use soft_sphere::prelude::Float;
 
 /// Machine epsilon of `F`: the gap between 1 and the next larger number.
 pub fn epsilon<F: Float>() -> f64 {

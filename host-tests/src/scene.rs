@@ -8,7 +8,7 @@ use rayon::prelude::*;
 
 use crate::energy::kinetic;
 use crate::random::Xorshift;
-use soft_sphere::{Float, Law, MaterialTable, MaterialWall, Sphere, Vec3, Wall};
+use soft_sphere::prelude::{Float, Law, MaterialTable, MaterialWall, Sphere, Vec3, Wall};
 use soft_sphere_scene::{Domain, Executor, WallSet};
 
 /// A rayon thread pool as the scene's [`Executor`]: each phase of a step (pairs, walls,

@@ -2,7 +2,7 @@
 //! taken as current only when the call succeeds.
 
 use soft_sphere::executor::{Executor, Serial};
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, ContactList, Interaction, Law, ListError, ListOutput, ListStats, MaterialTable,
     MaterialWall, PairLoad, Spheres, TimeStep, Vec3,
 };

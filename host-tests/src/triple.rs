@@ -1,7 +1,7 @@
 //! `[f64; 3]` vector arithmetic for test inputs and checks, kept apart from the kernel's `Vec3` so
 //! that test arithmetic is always f64 whatever precision the kernel runs in.
 
-use soft_sphere::{Float, Vec3};
+use soft_sphere::prelude::{Float, Vec3};
 
 /// A kernel vector of precision `F` (rounded to nearest).
 pub fn to_vec3<F: Float>(a: [f64; 3]) -> Vec3<F> {

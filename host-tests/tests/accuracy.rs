@@ -6,7 +6,7 @@
 //! for with `coarse_time_step`, whose contacts past the accuracy limit are counted.
 
 use host_tests::impact::{Integrator, floor, incoming_sphere, wall_impact_with};
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, LinearSpringDashpot,
     NormalModel, ParameterError, TimeStep,
 };

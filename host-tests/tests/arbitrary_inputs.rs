@@ -5,7 +5,7 @@
 use arbitrary::{Arbitrary, Unstructured};
 use host_tests::random::Xorshift;
 use soft_sphere::checks;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, ContactState, Hertz, HertzImpact, Interaction, LinearSpringDashpot, MicroSlip,
     MicroSlipSprings, MindlinParameters, ModelAA, Sphere, SpringDisplacement, TangentialParameters,
     Wall, WallShape,
@@ -47,7 +47,7 @@ fn case<L, S>(
         &Sphere<f64>,
         &Sphere<f64>,
         &mut S,
-    ) -> Result<Interaction<f64>, soft_sphere::ContactError>,
+    ) -> Result<Interaction<f64>, soft_sphere::prelude::ContactError>,
 ) -> bool
 where
     S: ContactState + for<'a> Arbitrary<'a>,
@@ -160,7 +160,7 @@ fn arbitrary_walls_and_laws_are_valid_or_skipped() {
 /// at any stored number.
 #[test]
 fn states_are_read_field_by_field() {
-    use soft_sphere::{MindlinSpring, RollingSpring, Vec3};
+    use soft_sphere::prelude::{MindlinSpring, RollingSpring, Vec3};
     let values: Vec<f64> = (1..=16).map(|k| k as f64 * 0.5).collect();
     let bytes: Vec<u8> = values.iter().flat_map(|x| x.to_le_bytes()).collect();
     let read = |k: usize| Vec3::new(values[k], values[k + 1], values[k + 2]);

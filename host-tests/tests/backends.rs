@@ -3,7 +3,7 @@
 //! `Micromath` is within the bounds its documentation states.
 
 use host_tests::random::Xorshift;
-use soft_sphere::{Libm, MathBackend, Micromath};
+use soft_sphere::prelude::{Libm, MathBackend, Micromath};
 
 /// Largest error of `f` against `exact` over 20,000 log-uniform arguments in `[lo, hi]`:
 /// relative to the exact value, or, for functions that pass through zero, absolute.

@@ -2,7 +2,7 @@
 //! in an engine's own structures or sent to another thread, and still gives, contact by
 //! contact, the bits of the law's own checked evaluation (the peer path).
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     BoundLaw, CheckedSphere, ContactLaw, ContactState, Interaction, LinearAA, LinearSpringDashpot,
     ModelAA, Sphere, SpringDisplacement, TangentialParameters, Vec3,
 };
@@ -31,7 +31,7 @@ fn pair(step: usize) -> (Sphere<f64>, Sphere<f64>) {
 }
 
 /// The bound law made inside a function whose law is gone when it returns.
-fn bound_from_a_temporary_law() -> (BoundLaw<Linear>, soft_sphere::TimeStep<f64>) {
+fn bound_from_a_temporary_law() -> (BoundLaw<Linear>, soft_sphere::prelude::TimeStep<f64>) {
     let law = law();
     let dt = law
         .time_step(1.0e-6, 0.5 * Sphere::solid(Vec3::ZERO, 1.0e-3, 2500.0).mass)

@@ -2,7 +2,7 @@
 //! what breaks it, at the tolerance the kernel's own tests use.
 
 use soft_sphere::checks::{self, Violation};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactForces, MicroSlipSprings, MindlinSpring, RollingSpring, Sphere, SpringDisplacement, Vec3,
 };
 

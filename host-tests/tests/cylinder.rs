@@ -4,7 +4,7 @@
 //! answer: the normal force `k_n delta` towards the axis, the restitution of a radial impact, the
 //! Coulomb limit along the surface's motion, no tangential force on a sphere moving with it.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ConstantRolling, ContactError, ContactForces, ContactLaw, ElasticPlasticRolling,
     Float, Interaction, LeverArm, LinearAA, LinearSpringDashpot, ModelAA, Parameter,
     ParameterError, Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, WallShape,

@@ -8,7 +8,7 @@
 
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, pair_and_wall, wall_of};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, ElasticPlasticRolling, Hertz, HertzImpact, Interaction, Law, LinearAA,
     LinearSpring, LinearSpringDashpot, MaterialTable, MaterialWall, MindlinAA, MindlinParameters,
     ModelAA, Sphere, SpringDisplacement, TangentialParameters, Vec3, Wall, effective_mass,
@@ -48,8 +48,8 @@ fn normal_work<L: Law<Float = f64>>(law: &L, overlaps: &[f64]) {
         };
         let mut state = L::State::default();
         let (i, j) = (
-            soft_sphere::CheckedSphere::new(a).unwrap(),
-            soft_sphere::CheckedSphere::new(b).unwrap(),
+            soft_sphere::prelude::CheckedSphere::new(a).unwrap(),
+            soft_sphere::prelude::CheckedSphere::new(b).unwrap(),
         );
         match law.at(dt).sphere_sphere(&i, &j, &mut state).unwrap() {
             Interaction::Touching(c) => c.normal_force,
@@ -105,8 +105,8 @@ fn spring_work<L: Law<Float = f64>>(
     let dt = law.time_step(1e-7, a.mass / 2.0).unwrap();
     let mut bound = law.at(dt);
     let (checked_a, checked_b) = (
-        soft_sphere::CheckedSphere::new(a).unwrap(),
-        soft_sphere::CheckedSphere::new(b).unwrap(),
+        soft_sphere::prelude::CheckedSphere::new(a).unwrap(),
+        soft_sphere::prelude::CheckedSphere::new(b).unwrap(),
     );
     let mut state = L::State::default();
     let mut work = 0.0;

@@ -1,7 +1,7 @@
 //! Every error value is produced by the input that should produce it, nothing panics, and a
 //! rejected evaluation leaves the caller's per-contact state exactly as it was.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactLaw, Frictionless, Interaction, LinearAA,
     LinearSpringDashpot, ModelAA, Parameter, ParameterError, Sphere, SpringDisplacement, Stateless,
     TangentialParameters, Vec3, Wall,
@@ -534,7 +534,7 @@ fn contact_and_coincidence_begin_exactly_where_documented() {
 
 #[test]
 fn a_stored_state_that_would_overflow_is_refused_though_the_force_is_finite() {
-    use soft_sphere::ModelAALuding;
+    use soft_sphere::prelude::ModelAALuding;
     // Luding's reset divides by k_t: with a subnormal k_t the displacement it would store for a
     // sliding contact is infinite while the force (at the Coulomb limit) is finite.
     let law = ContactLaw::new(

@@ -4,7 +4,7 @@
 //! kinetic energy for a long time: "at rest" means almost all of the drop's energy is gone.)
 
 use fixed_loop::{BOX_SIDE, BoxScene, RADIUS, SPHERES};
-use soft_sphere::{Libm, MathBackend, Micromath};
+use soft_sphere::prelude::{Libm, MathBackend, Micromath};
 
 fn settles<M: MathBackend<f32>>(name: &str) {
     let mut scene = BoxScene::<M>::new().unwrap();

@@ -10,7 +10,7 @@ use host_tests::strategies::{Collision, collision, config};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Float, Frictionless, Hertz, HertzImpact, Interaction, Law, Material, MicroSlip,
     MindlinAA, MindlinAALuding, MindlinParameters, MindlinSpring, MindlinStateless, Parameter,
     ParameterError, Sphere, TangentialModel, Vec3, Wall, effective_mass,
@@ -248,7 +248,7 @@ fn the_time_steps_come_from_the_declared_impact() {
 /// Pairing a Mindlin law with a linear normal law does not compile:
 ///
 /// ```compile_fail
-/// use soft_sphere::{ContactLaw, LinearSpringDashpot, MindlinAA, MindlinParameters};
+/// use soft_sphere::prelude::{ContactLaw, LinearSpringDashpot, MindlinAA, MindlinParameters};
 /// let law = ContactLaw::new(
 ///     LinearSpringDashpot::new(1.0e4_f64, 0.8).unwrap(),
 ///     MindlinAA(MindlinParameters::new(1.0e9, 0.0, 0.3).unwrap()),
@@ -257,7 +257,7 @@ fn the_time_steps_come_from_the_declared_impact() {
 #[test]
 fn mindlin_needs_a_contact_radius() {
     const { assert!(<MindlinAA<f64> as TangentialModel<f64>>::NEEDS_CONTACT_RADIUS) };
-    const { assert!(<Hertz<f64> as soft_sphere::NormalModel<f64>>::CONTACT_RADIUS) };
+    const { assert!(<Hertz<f64> as soft_sphere::prelude::NormalModel<f64>>::CONTACT_RADIUS) };
 }
 
 // Random collisions ----------------------------------------------------------------------------
@@ -562,14 +562,14 @@ proptest! {
         let mut i = Sphere::solid(v(6), x(9), 2500.0);
         i.velocity = v(10);
         let j = Sphere::solid(v(13), x(14), x(15));
-        let before = soft_sphere::MicroSlipSprings {
+        let before = soft_sphere::prelude::MicroSlipSprings {
             normal: v(17),
             contact_radius: x(20),
             positions: [x(16), x(3), x(7), x(8)],
             displacements: [v(21), v(24), v(27), Vec3::new(x(30), x(31), x(0))],
         };
         let mut state = before;
-        let flat = |s: &soft_sphere::MicroSlipSprings<f64, 4>| {
+        let flat = |s: &soft_sphere::prelude::MicroSlipSprings<f64, 4>| {
             let mut out = vec![s.contact_radius.to_bits()];
             out.extend(s.positions.map(f64::to_bits));
             for u in std::iter::once(&s.normal).chain(s.displacements.iter()) {
@@ -578,7 +578,7 @@ proptest! {
             out
         };
         match law.sphere_sphere(&i, &j, &mut state, dt) {
-            Ok(Interaction::Touching(f)) => prop_assert!(f.force_on_j().is_finite() && f.torque_on_i.is_finite() && soft_sphere::ContactState::is_finite(&state)),
+            Ok(Interaction::Touching(f)) => prop_assert!(f.force_on_j().is_finite() && f.torque_on_i.is_finite() && soft_sphere::prelude::ContactState::is_finite(&state)),
             Ok(Interaction::Apart) => prop_assert_eq!(state, Default::default()),
             Err(_) => prop_assert_eq!(flat(&state), flat(&before)),
         }
@@ -649,9 +649,9 @@ fn the_slots_give_back_what_they_were_built_from() {
         (4.0e10, 0.5, 0.3)
     );
     assert_eq!(p.stiffness(1e-4), 8.0 * 4.0e10 * 1e-4);
-    let c = soft_sphere::ConstantRolling::new(0.1).unwrap();
+    let c = soft_sphere::prelude::ConstantRolling::new(0.1).unwrap();
     assert_eq!(c.friction(), 0.1);
-    let e = soft_sphere::ElasticPlasticRolling::new(0.2, 3.0, 0.0, 1e-9).unwrap();
+    let e = soft_sphere::prelude::ElasticPlasticRolling::new(0.2, 3.0, 0.0, 1e-9).unwrap();
     assert_eq!((e.friction(), e.stiffness()), (0.2, 3.0));
     // A given damping factor reports the rebound it gives: the solved one's inverse.
     let again = Hertz::with_damping_factor(2.0e11, h.damping_factor(), largest).unwrap();
@@ -716,7 +716,7 @@ fn the_hertz_mode_is_stable_below_the_limit_and_grows_above_it() {
 
 /// One contact evaluation of a law on a sphere and its state.
 type Evaluate<'a> =
-    dyn Fn(&Sphere<f64>, &mut MindlinSpring<f64>) -> soft_sphere::ContactForces<f64> + 'a;
+    dyn Fn(&Sphere<f64>, &mut MindlinSpring<f64>) -> soft_sphere::prelude::ContactForces<f64> + 'a;
 
 #[test]
 fn a_sliding_step_keeps_what_each_rule_says() {
@@ -751,7 +751,7 @@ fn a_sliding_step_keeps_what_each_rule_says() {
             .forces()
             .unwrap()
     };
-    let limit = |f: &soft_sphere::ContactForces<f64>| mu * f.normal_force.abs();
+    let limit = |f: &soft_sphere::prelude::ContactForces<f64>| mu * f.normal_force.abs();
     // A spring ten times past the limit, no slip: both slide at the limit; the cap keeps the
     // limit, Luding keeps the sliding force (no dashpot without slip).
     let (f, kept) = step(&cap_law, 0.0, 1.0);
@@ -795,7 +795,7 @@ fn a_sliding_step_keeps_what_each_rule_says() {
 
 #[test]
 fn the_stateless_mindlin_law_follows_its_closed_form_and_step() {
-    use soft_sphere::{Libm, NormalModel};
+    use soft_sphere::prelude::{Libm, NormalModel};
     let (e_star, g_star, mu, ratio) = (1.0e9, 0.4e9, 10.0, 0.5);
     let hertz = Hertz::new(e_star, 0.5, impact(1.0, 1e-3)).unwrap();
     let p = MindlinParameters::new(g_star, ratio, mu).unwrap();
@@ -850,8 +850,8 @@ fn a_given_damping_factor_is_kept_with_its_rebound_and_duration() {
     assert!(given.restitution() < 0.9, "{}", given.restitution());
     let mass = 1.0e-5;
     let (damped, elastic) = (
-        soft_sphere::NormalModel::contact_duration(&given, mass),
-        soft_sphere::NormalModel::contact_duration(&undamped, mass),
+        soft_sphere::prelude::NormalModel::contact_duration(&given, mass),
+        soft_sphere::prelude::NormalModel::contact_duration(&undamped, mass),
     );
     assert!((damped / elastic - 1.0).abs() > 0.01, "{damped} {elastic}");
 }

@@ -2,7 +2,7 @@
 //! ends, a full store as an error value with nothing lost, and the same bits whatever the order
 //! contacts were inserted in.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, LinearAA,
     LinearSpringDashpot, ModelAA, Sphere, SpringDisplacement, TangentialParameters, TimeStep, Vec3,
 };

@@ -307,23 +307,23 @@ fn the_benchmarks_time_the_list() {
 /// The tangential slot's type in `f64` (micro-slip at 16 breakpoints).
 macro_rules! slot_type {
     (Frictionless) => {
-        soft_sphere::Frictionless
+        soft_sphere::prelude::Frictionless
     };
     (MicroSlip) => {
-        soft_sphere::MicroSlip<f64, 16>
+        soft_sphere::prelude::MicroSlip<f64, 16>
     };
     ($tangential:ident) => {
-        soft_sphere::$tangential<f64>
+        soft_sphere::prelude::$tangential<f64>
     };
 }
 
 /// The alias's type in `f64`.
 macro_rules! alias_type {
     (HertzMicroSlip) => {
-        soft_sphere::HertzMicroSlip<f64, 16>
+        soft_sphere::prelude::HertzMicroSlip<f64, 16>
     };
     ($alias:ident) => {
-        soft_sphere::$alias<f64>
+        soft_sphere::prelude::$alias<f64>
     };
 }
 
@@ -334,7 +334,7 @@ macro_rules! aliases_are_their_slots {
         $(
             same_type(
                 None::<alias_type!($alias)>,
-                None::<soft_sphere::ContactLaw<f64, soft_sphere::$normal<f64>, slot_type!($tangential)>>,
+                None::<soft_sphere::prelude::ContactLaw<f64, soft_sphere::prelude::$normal<f64>, slot_type!($tangential)>>,
             );
         )*
     };

@@ -3,7 +3,7 @@
 
 use std::mem::size_of;
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, LinearFrictionless, LinearSpringDashpot, ModelA, ModelAA, ModelB,
     ModelC, NonRotating, Rotating, SpringDisplacement, Stateless, TangentialModel,
 };
@@ -25,7 +25,13 @@ fn off_slots_and_stateless_laws_cost_no_memory() {
     assert_eq!(
         size_of::<LinearFrictionless<f64>>(),
         size_of::<
-            ContactLaw<f64, LinearSpringDashpot<f64>, Frictionless, soft_sphere::Libm, NonRotating>,
+            ContactLaw<
+                f64,
+                LinearSpringDashpot<f64>,
+                Frictionless,
+                soft_sphere::prelude::Libm,
+                NonRotating,
+            >,
         >()
     );
     assert!(size_of::<LinearFrictionless<f64>>() <= size_of::<LinearSpringDashpot<f64>>() + 32);
@@ -36,9 +42,12 @@ fn stored_spring_laws_keep_three_floats_per_contact() {
     assert_eq!(size_of::<SpringDisplacement<f32>>(), 12);
     assert_eq!(size_of::<SpringDisplacement<f64>>(), 24);
     // Mindlin's: the spring's force and the contact radius.
-    assert_eq!(size_of::<soft_sphere::MindlinSpring<f32>>(), 16);
-    assert_eq!(size_of::<soft_sphere::MindlinSpring<f64>>(), 32);
-    assert_eq!(state_size::<soft_sphere::MindlinStateless<f64>>(), 0);
+    assert_eq!(size_of::<soft_sphere::prelude::MindlinSpring<f32>>(), 16);
+    assert_eq!(size_of::<soft_sphere::prelude::MindlinSpring<f64>>(), 32);
+    assert_eq!(
+        state_size::<soft_sphere::prelude::MindlinStateless<f64>>(),
+        0
+    );
     assert_eq!(state_size::<ModelA<f64>>(), 24);
     assert_eq!(state_size::<ModelB<f64>>(), 24);
     assert_eq!(state_size::<ModelAA<f64>>(), 24);
@@ -46,7 +55,7 @@ fn stored_spring_laws_keep_three_floats_per_contact() {
 
 #[test]
 fn a_law_reports_the_slots_it_was_built_with() {
-    use soft_sphere::{LeverArm, TangentialParameters};
+    use soft_sphere::prelude::{LeverArm, TangentialParameters};
     let normal = LinearSpringDashpot::new(1000.0, 0.7).unwrap();
     let tangential = ModelAA(TangentialParameters::new(300.0, 0.4, 0.5).unwrap());
     let law = ContactLaw::new(normal, tangential);
@@ -68,7 +77,7 @@ fn a_law_reports_the_slots_it_was_built_with() {
 
 #[test]
 fn vectors_convert_to_and_from_arrays() {
-    use soft_sphere::Vec3;
+    use soft_sphere::prelude::Vec3;
     let v = Vec3::new(1.5f64, -2.0, 0.25);
     assert_eq!(v.to_array(), [1.5, -2.0, 0.25]);
     assert_eq!(Vec3::from([1.5, -2.0, 0.25]), v);

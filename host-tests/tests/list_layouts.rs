@@ -4,7 +4,7 @@
 
 use host_tests::random::Xorshift;
 use host_tests::seam::evaluate_swapping;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, CheckedSphere, ContactError, Interaction, LinearMaterial, LinearMixing,
     ListArray, ListError, MaterialTable, ModelAA, Sphere, SphereArrays, SphereSlice, Spheres,
     SpringDisplacement, TimeStep, Vec3,
@@ -14,7 +14,11 @@ const RADIUS: f64 = 0.5e-3;
 const BOX: f64 = 4e-3;
 
 type Table = MaterialTable<
-    soft_sphere::ContactLaw<f64, soft_sphere::LinearSpringDashpot<f64>, ModelAA<f64>>,
+    soft_sphere::prelude::ContactLaw<
+        f64,
+        soft_sphere::prelude::LinearSpringDashpot<f64>,
+        ModelAA<f64>,
+    >,
     2,
 >;
 

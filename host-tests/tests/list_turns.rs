@@ -6,7 +6,7 @@
 
 use host_tests::random::Xorshift;
 use host_tests::seam::evaluate_swapping;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, CheckedSphere, ContactLaw, ElasticPlasticRolling, Float, Hertz, HertzImpact,
     Interaction, Law, LinearSpringDashpot, MaterialTable, MindlinAA, MindlinAALuding,
     MindlinParameters, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere, SphereArrays,

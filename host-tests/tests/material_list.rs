@@ -8,7 +8,7 @@ use host_tests::scene::Threads;
 use host_tests::seam::{evaluate_swapping, evaluate_swapping_on};
 use proptest::prelude::*;
 use soft_sphere::executor::{Executor, Serial};
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, ContactError, ContactList, ElasticMaterial, HertzImpact, HertzMixing,
     Interaction, Law, LinearAA, LinearMaterial, LinearMixing, ListArray, ListError, ListOutput,
     ListStats, Material, MaterialTable, MaterialWall, MindlinAA, Mixing, ModelAA, ModelC, PairLoad,
@@ -201,8 +201,8 @@ impl Mixture {
         }
     }
 
-    fn sphere(&self, k: usize) -> soft_sphere::Sphere<f64> {
-        soft_sphere::Sphere {
+    fn sphere(&self, k: usize) -> soft_sphere::prelude::Sphere<f64> {
+        soft_sphere::prelude::Sphere {
             position: self.position[k],
             velocity: self.velocity[k],
             angular_velocity: self.angular_velocity[k],
@@ -258,7 +258,7 @@ fn one_at_a_time(
     table: &MaterialTable<Linear, 3>,
     m: &Mixture,
     walls: &[MaterialWall<f64>],
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
     (pair_states, wall_states): (&mut [State], &mut [State]),
 ) -> Result<Step, ContactError> {
     let n = m.position.len();
@@ -456,7 +456,7 @@ fn try_evaluate(
     arrays: &SphereArrays<'_, f64>,
     pairs: &[[u32; 2]],
     walls: &[MaterialWall<f64>],
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
 ) -> Result<(), ListError> {
     let n = arrays.len();
     let preload = |k: usize| State {
@@ -501,7 +501,7 @@ type Plain = (
 fn evaluate_plain<L: Law<Float = f64>>(
     t: &MaterialTable<L, 3>,
     m: &Mixture,
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
     states: &mut [L::State],
 ) -> Plain {
     let pairs = CheckedPairs::new(&m.pairs, &[], m.position.len()).unwrap();
@@ -514,7 +514,7 @@ fn evaluate_checked_pairs<L: Law<Float = f64>>(
     t: &MaterialTable<L, 3>,
     arrays: &SphereArrays<'_, f64>,
     pairs: CheckedPairs<'_, f64>,
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
     states: &mut [L::State],
 ) -> Plain {
     let n = arrays.len();
@@ -536,7 +536,7 @@ fn evaluate_checked(
     t: &MaterialTable<Linear, 3>,
     arrays: &SphereArrays<'_, f64>,
     pairs: CheckedPairs<'_, f64>,
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
 ) -> Result<(), ListError> {
     let mut states = vec![State::default(); pairs.len()];
     let (result, force, torque) = evaluate_checked_pairs(t, arrays, pairs, dt, &mut states);
@@ -1185,7 +1185,7 @@ fn first_refused_one_at_a_time(
     t: &MaterialTable<Linear, 3>,
     m: &Mixture,
     pairs: &[[u32; 2]],
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
 ) -> Option<ListError> {
     pairs.iter().enumerate().find_map(|(pair, &[i, j])| {
         let (i, j) = (i as usize, j as usize);
@@ -1206,7 +1206,7 @@ fn first_refused_one_at_a_time(
 /// forces alone: a contact that overflows is refused by the chunk's probe.
 #[test]
 fn a_contact_of_a_law_without_state_is_refused_on_its_forces() {
-    let t = MaterialTable::<soft_sphere::ContactLaw<f64, _, ModelC<f64>>, 3>::mixed(
+    let t = MaterialTable::<soft_sphere::prelude::ContactLaw<f64, _, ModelC<f64>>, 3>::mixed(
         &LinearMixing::new(ModelC),
         &[glass(), rubber(), steel()],
     )
@@ -1335,7 +1335,7 @@ fn evaluate_on<E: Executor>(
     t: &MaterialTable<Linear, 3>,
     (executor, loads): (&E, &mut [PairLoad<f64>]),
     (m, pairs, walls): (&Mixture, &[[u32; 2]], &[MaterialWall<f64>]),
-    dt: soft_sphere::TimeStep<f64>,
+    dt: soft_sphere::prelude::TimeStep<f64>,
     (states, wall_states): (&mut [State], &mut [State]),
 ) -> Evaluated {
     let n = m.position.len();

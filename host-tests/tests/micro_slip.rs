@@ -5,10 +5,10 @@
 use host_tests::analytic::{cattaneo_mindlin, cycle_dissipation, mindlin_deresiewicz_unloading};
 use host_tests::random::Xorshift;
 use host_tests::validation::micro_slip::ShearBed;
-use soft_sphere::TangentialInput;
-use soft_sphere::{
+use soft_sphere::prelude::{
     Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialModel, Vec3,
 };
+use soft_sphere::slots::TangentialInput;
 
 /// Steel on a rigid plane: `E*`, `G*` (Pa), `R` (m), `mu`.
 const MODULUS: f64 = 2.286e11;
@@ -284,12 +284,12 @@ fn the_dashpot_adds_to_the_springs_and_no_friction_means_no_force() {
     };
     let out = frictionless.force::<Libm>(&MicroSlipSprings::default(), &still);
     assert_eq!(out.force, Vec3::ZERO);
-    assert!(soft_sphere::ContactState::is_finite(&out.state));
+    assert!(soft_sphere::prelude::ContactState::is_finite(&out.state));
 }
 
 #[test]
 fn a_state_is_finite_only_when_every_number_is() {
-    use soft_sphere::ContactState;
+    use soft_sphere::prelude::ContactState;
     let good = MicroSlipSprings::<f64, 2> {
         normal: Vec3::new(0.0, 0.0, 1.0),
         contact_radius: 1e-4,
@@ -545,19 +545,19 @@ fn one_step_from_any_profile_along_x_is_the_springs_step() {
 #[test]
 fn the_stable_step_is_mindlins() {
     // The springs never exceed Mindlin's no-slip stiffness: the same tangential mode.
-    let hertz = soft_sphere::Hertz::new(
+    let hertz = soft_sphere::prelude::Hertz::new(
         MODULUS,
         0.9,
-        soft_sphere::HertzImpact {
+        soft_sphere::prelude::HertzImpact {
             speed: 5.0,
             effective_radius: RADIUS,
         },
     )
     .unwrap();
     let p = MindlinParameters::new(SHEAR, 0.5, FRICTION).unwrap();
-    let design = soft_sphere::NormalModel::design_contact(&hertz, 0.03);
+    let design = soft_sphere::prelude::NormalModel::design_contact(&hertz, 0.03);
     let micro = MicroSlip::<f64, 8>::new(p).critical_time_step(&design, 0.01);
-    let mindlin = soft_sphere::MindlinAA(p).critical_time_step(&design, 0.01);
+    let mindlin = soft_sphere::prelude::MindlinAA(p).critical_time_step(&design, 0.01);
     assert!(micro > 0.0 && micro.is_finite());
     assert_eq!(micro, mindlin);
 }

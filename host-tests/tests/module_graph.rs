@@ -166,19 +166,36 @@ fn defined(files: &[PathBuf]) -> BTreeSet<String> {
 /// What the crate root makes of each name: the module it comes from (`use m::{..}` and
 /// `use m::*`, public or not), or `lib` for an item the root defines itself.
 fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<String, String> {
-    let t = tokens(&code(&src.join("lib.rs")));
     let mut out: BTreeMap<String, String> = defined(&[src.join("lib.rs")])
         .into_iter()
         .map(|name| (name, "lib".to_string()))
         .collect();
+    imports(&tokens(&code(&src.join("lib.rs"))), modules, &mut out, true);
+    out
+}
+
+/// The names the `use` statements of `t` bring in, each to the module it comes from (a path
+/// from the root or from `crate::`). With `follow`, a glob of a module that only re-exports (the
+/// kernel's `use prelude::*`) brings in what that module's own `use` statements name.
+fn imports(
+    t: &[String],
+    modules: &BTreeMap<String, Vec<PathBuf>>,
+    out: &mut BTreeMap<String, String>,
+    follow: bool,
+) {
     for k in 0..t.len() {
         if t[k] != "use" {
             continue;
         }
-        let Some((module, span)) = module_at(&t, k + 1, modules) else {
+        let from = if t.get(k + 1).map(String::as_str) == Some("crate") {
+            k + 3
+        } else {
+            k + 1
+        };
+        let Some((module, span)) = module_at(t, from, modules) else {
             continue;
         };
-        let at = k + 1 + span;
+        let at = from + span;
         // `use law::checks;`: the root names a module itself.
         if t.get(at).map(String::as_str) == Some(";") {
             let last = module.rsplit("::").next().unwrap_or(&module).to_string();
@@ -194,6 +211,11 @@ fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<
                 for name in defined(&modules[module]) {
                     out.entry(name).or_insert_with(|| module.clone());
                 }
+                if follow {
+                    for file in &modules[module] {
+                        imports(&tokens(&code(file)), modules, out, false);
+                    }
+                }
             }
             "{" => {
                 for token in t[at + 2..].iter().take_while(|x| *x != "}") {
@@ -207,7 +229,6 @@ fn root_names(src: &Path, modules: &BTreeMap<String, Vec<PathBuf>>) -> BTreeMap<
             }
         }
     }
-    out
 }
 
 /// The import graph of the crate at `src`, its root (`lib`, what `lib.rs` holds besides its
@@ -382,6 +403,10 @@ fn the_scan_sees_each_way_of_naming_and_the_search_finds_a_cycle() {
     assert!(names(law).contains(&forces.to_string()));
     // A link to `crate::Frictionless` in a comment is not an import.
     assert!(!names(forces).contains(&"law::tangential".to_string()));
+    // Through the prelude the root names each item's home: `Vec3` is `value::vector`'s.
+    let names = root_names(&crate_src("kernel/src"), &modules(&crate_src("kernel/src")));
+    assert_eq!(names.get("Vec3").map(String::as_str), Some("value::vector"));
+    assert_eq!(names.get("checks").map(String::as_str), Some("law::checks"));
     // A folder inside a folder of concerns is one module.
     assert!(graph.contains_key("law::tangential") && !graph.contains_key("law"));
     let mut looped = graph.clone();

@@ -4,7 +4,7 @@
 
 use host_tests::analytic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, Law, LinearSpring, LinearSpringDashpot, Micromath, ParameterError,
 };
 

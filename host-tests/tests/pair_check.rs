@@ -2,7 +2,7 @@
 //! every earlier one.
 
 use proptest::prelude::*;
-use soft_sphere::{CheckedPairs, ListArray, ListError, PairList, Vec3, check_pairs};
+use soft_sphere::prelude::{CheckedPairs, ListArray, ListError, PairList, Vec3, check_pairs};
 
 /// Whether entries `a` and `b` name one contact: the same two spheres through the same image,
 /// either way round (`[i, j]` shifted by `s` is `[j, i]` shifted by `-s`).

@@ -14,7 +14,7 @@ use host_tests::triple::{cross, from_vec3, norm};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactForces, ContactHistory, ContactKey, ContactLaw, Float, Frictionless, Interaction,
     LeverArm, Libm, LinearLaw, LinearSpringDashpot, Micromath, ModelA, ModelAA, ModelAALuding,
     ModelB, ModelC, Sphere, SpringDisplacement, Stateless, TangentialModel, TangentialParameters,
@@ -819,8 +819,8 @@ fn arbitrary_bits_never_panic<F: Float>(bits: &[u64; 16]) -> Result<(), TestCase
     }
     // A plane, and a turning cylinder about the same line.
     let walls = [
-        soft_sphere::Wall::new(v(4), v(8)),
-        soft_sphere::Wall::cylinder(v(4), v(8), x(13)).and_then(|w| w.with_spin(x(14))),
+        soft_sphere::prelude::Wall::new(v(4), v(8)),
+        soft_sphere::prelude::Wall::cylinder(v(4), v(8), x(13)).and_then(|w| w.with_spin(x(14))),
     ];
     for wall in walls.into_iter().flatten() {
         let mut state = before;

@@ -8,7 +8,7 @@ use host_tests::strategies::{Collision, collision, config};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ConstantRolling, ContactLaw, ElasticPlasticRolling, Interaction, Law, LinearSpringDashpot,
     ModelAA, NoRolling, Parameter, ParameterError, RollingModel, RollingSpring, Sphere,
     SpringDisplacement, TangentialParameters, Vec3, effective_mass,
@@ -182,7 +182,7 @@ fn twisting_about_the_normal_is_not_resisted() {
     let law = ContactLaw::new(normal, ModelAA(p));
     let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3 - 1.0e-5), 1.0e-3, 2500.0);
     sphere.angular_velocity = Vec3::new(0.0, 0.0, 50.0);
-    let floor = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let floor = soft_sphere::prelude::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
     let dt = law.time_step(1e-6, sphere.mass).unwrap();
     let constant = law.with_rolling(ConstantRolling::new(0.3).unwrap());
     let epsd = law.with_rolling(ElasticPlasticRolling::new(0.3, 1e-4, 1e-7, 1e-12).unwrap());

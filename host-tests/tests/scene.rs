@@ -6,7 +6,7 @@
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene, SceneExt, Threads, pair_and_wall, wall_of};
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactLaw, Interaction, LinearAA, LinearSpringDashpot,
     LinearStateless, MaterialTable, MaterialWall, ModelAA, Sphere, SpringDisplacement, Stateless,
     TangentialParameters, Vec3, Wall,

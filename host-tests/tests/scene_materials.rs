@@ -5,7 +5,7 @@
 
 use host_tests::random::Xorshift;
 use host_tests::scene::{Column, OwnedScene};
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, Interaction, LinearMaterial, LinearMixing, LinearStateless, MaterialTable,
     MaterialWall, Sphere, Stateless, Vec3, Wall,
 };

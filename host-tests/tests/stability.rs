@@ -6,7 +6,7 @@
 
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, Interaction, LinearSpringDashpot, Sphere, Stateless,
     TangentialParameters, Vec3,
 };
@@ -126,7 +126,7 @@ fn below_the_limit_accuracy_depends_on_where_a_step_meets_the_contact() {
 
 #[test]
 fn model_c_is_limited_by_the_root_of_its_step_dependent_dashpot() {
-    use soft_sphere::ModelC;
+    use soft_sphere::prelude::ModelC;
     // Model C's tangential force is a dashpot of strength c = k_t dt + eta_t: a sticking contact
     // of mass m_t stays stable while c dt < 2 m_t, that is below the positive root of
     // k_t dt^2 + eta_t dt = 2 m_t. A stiff tangential spring makes that root the law's limit.

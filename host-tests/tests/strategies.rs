@@ -5,12 +5,12 @@
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
+use soft_sphere::prelude::{CheckedSphere, NormalModel, Vec3, WallShape, effective_mass};
 use soft_sphere::strategies::{
     Collision, any_bits, any_sphere, collision, constant_rolling, elastic_plastic_rolling,
     grazing_pair, hertz, impact, linear_spring_dashpot, mindlin_parameters, sphere,
     tangential_parameters, touching_pair, unit_vector, wall,
 };
-use soft_sphere::{CheckedSphere, NormalModel, Vec3, WallShape, effective_mass};
 
 fn within(x: f64, low: f64, high: f64) -> bool {
     x >= low * (1.0 - 1e-12) && x <= high * (1.0 + 1e-12)

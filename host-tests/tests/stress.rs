@@ -5,7 +5,7 @@
 use host_tests::energy::kinetic;
 use host_tests::impact::{floor, incoming_sphere, wall_impact};
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactError, ContactLaw, Float, Frictionless, Interaction, Libm, LinearLaw,
     LinearSpringDashpot, ModelA, ModelAA, ModelB, ParameterError, Rotating, Rotation, Sphere,
     Stateless, TangentialModel, TangentialParameters, Vec3,
@@ -298,7 +298,7 @@ fn extreme_sizes_and_mass_ratios_collide_cleanly() {
         let j = Sphere::solid(j_centre, large, DENSITY);
         i.velocity = Vec3::new(1.0, 0.3, 0.0);
         i.angular_velocity = Vec3::new(0.0, 0.0, 1e3 / small);
-        let m = soft_sphere::effective_mass(i.mass, j.mass);
+        let m = soft_sphere::prelude::effective_mass(i.mass, j.mass);
         let k = m * (1.0f64 / (0.02 * small)).powi(2);
         let law = ContactLaw::new(
             LinearSpringDashpot::new(k, 0.8).unwrap(),

@@ -6,7 +6,7 @@ use host_tests::analytic::{self, rigid_body_oblique};
 use host_tests::data;
 use host_tests::impact::{oblique_rebound, pair_collision};
 use host_tests::precision::{bits, epsilon};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactForces, ContactLaw, Float, Frictionless, Interaction, LeverArm, LinearSpringDashpot,
     Micromath, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Sphere, SpringDisplacement,
     Stateless, TangentialModel, TangentialParameters, Vec3, effective_mass,
@@ -704,8 +704,8 @@ fn model_aa_cuts_its_spring_only_when_the_contact_slides() {
 /// compare equal) still slide at the limit, along the trial force.
 #[test]
 fn forces_too_large_to_square_still_meet_coulomb() {
-    use soft_sphere::TangentialInput;
-    use soft_sphere::{Libm, NormalOscillator, TangentialModel};
+    use soft_sphere::prelude::{Libm, NormalOscillator, TangentialModel};
+    use soft_sphere::slots::TangentialInput;
     let law = ModelAA(TangentialParameters::new(1e10_f64, 0.0, 0.3).unwrap());
     let state = SpringDisplacement {
         displacement: Vec3::new(1e150, -2e150, 0.0),

@@ -6,7 +6,7 @@
 
 use host_tests::impact::floor;
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, Interaction, Law,
     LinearAA, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3, effective_mass,
 };
@@ -25,7 +25,7 @@ fn linear_aa(stiffness: f64) -> LinearAA<f64> {
 /// it rises after the first touch (m), or the first error.
 fn drop_on_floor<L: Law<Float = f64>>(
     law: &L,
-    time_step: soft_sphere::TimeStep<f64>,
+    time_step: soft_sphere::prelude::TimeStep<f64>,
     height: f64,
 ) -> Result<f64, ContactError> {
     bounce(law, time_step, height).map(|(highest, _, _)| highest)
@@ -35,7 +35,7 @@ fn drop_on_floor<L: Law<Float = f64>>(
 /// the bound law counted past the stable step.
 fn bounce<L: Law<Float = f64>>(
     law: &L,
-    time_step: soft_sphere::TimeStep<f64>,
+    time_step: soft_sphere::prelude::TimeStep<f64>,
     height: f64,
 ) -> Result<(f64, usize, usize), ContactError> {
     let mut sphere = Sphere::solid(Vec3::new(0.0, 0.0, RADIUS + height), RADIUS, DENSITY);
@@ -203,7 +203,7 @@ fn a_step_checked_against_a_heavier_mass_is_refused() {
     let i = Sphere::solid(Vec3::ZERO, RADIUS, DENSITY);
     let mut j = Sphere::solid(Vec3::new(1.9 * RADIUS, 0.0, 0.0), RADIUS, DENSITY);
     j.velocity.y = 0.1;
-    let mut state = soft_sphere::SpringDisplacement {
+    let mut state = soft_sphere::prelude::SpringDisplacement {
         displacement: Vec3::new(0.0, 1.0e-6, 0.0),
     };
     let before = state;
@@ -218,7 +218,7 @@ fn a_step_checked_against_a_heavier_mass_is_refused() {
 fn the_stable_phase_of_a_linear_oscillator_is_its_closed_form() {
     // 2 (sqrt(1 + z^2) - z): 2 undamped, smaller with damping (docs/physics.md, section 4).
     let spring = ContactLaw::new(
-        soft_sphere::LinearSpring::new(1.0e3_f64).unwrap(),
+        soft_sphere::prelude::LinearSpring::new(1.0e3_f64).unwrap(),
         Frictionless,
     );
     assert!((spring.stable_phase() - 2.0).abs() < 1e-15);
@@ -246,7 +246,7 @@ fn the_stable_phase_is_the_critical_step_times_the_frequency_at_every_mass() {
     };
     let hertz = ContactLaw::new(Hertz::new(5.0e9, 0.5, largest).unwrap(), Frictionless);
     for mass in [1.0e-9_f64, 1.0e-6, 1.0e-3, 1.0] {
-        let design = soft_sphere::NormalModel::design_contact(hertz.normal(), mass);
+        let design = soft_sphere::prelude::NormalModel::design_contact(hertz.normal(), mass);
         let phase = hertz.critical_time_step(mass) * design.oscillator.natural_frequency;
         assert!((phase / hertz.stable_phase() - 1.0).abs() < 1e-9, "{mass}");
     }

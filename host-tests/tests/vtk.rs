@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     Float, LinearAA, LinearMaterial, LinearMixing, MaterialTable, MaterialWall, ModelAA, Sphere,
     Vec3, Wall,
 };

@@ -24,7 +24,7 @@
 //! [`HertzFrictionless`], [`HertzMicroSlip`].
 //!
 //! ```
-//! use soft_sphere::{
+//! use soft_sphere::prelude::{
 //!     ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere, SpringDisplacement,
 //!     TangentialParameters, Vec3, effective_mass,
 //! };
@@ -204,49 +204,12 @@ mod seam;
 pub mod strategies;
 mod value;
 
+pub mod prelude;
+pub mod slots;
+
 pub use law::checks;
 pub use seam::executor;
 pub use value::motion;
 
-pub use law::contact_law::ContactLaw;
-pub use law::engine::{BoundLaw, Law};
-pub use law::geometry::LeverArm;
-pub use law::laws::{
-    HertzAA, HertzAALuding, HertzFrictionless, HertzLaw, HertzMicroSlip, HertzStateless, LinearAA,
-    LinearAALuding, LinearFrictionless, LinearLaw, LinearStateless,
-};
-pub use law::mixing::{ElasticMaterial, HertzMixing, LinearMaterial, LinearMixing, Mixing};
-pub use law::normal::{
-    Hertz, HertzImpact, LinearSpring, LinearSpringDashpot, NormalContact, NormalModel,
-    NormalOscillator,
-};
-pub use law::rolling::{
-    ConstantRolling, ElasticPlasticRolling, NoRolling, RollingInput, RollingModel, RollingSpring,
-};
-pub use law::rotation::{NonRotating, Rotating, Rotation};
-pub use law::tangential::{
-    ContactState, Frictionless, MicroSlip, MicroSlipSprings, MindlinAA, MindlinAALuding,
-    MindlinParameters, MindlinSpring, MindlinStateless, ModelA, ModelAA, ModelAALuding, ModelB,
-    ModelC, SpringDisplacement, Stateless, TangentialInput, TangentialModel, TangentialOutput,
-    TangentialParameters,
-};
-pub use seam::list::{ContactList, ListOutput, MaterialWall};
-pub use seam::list_error::{ListArray, ListError};
-pub use seam::pair_check::{CheckedPairs, PairList, check_pairs};
-pub use seam::spheres::{SphereArrays, SphereSlice, Spheres};
-pub use seam::spread::PairLoad;
-pub use seam::stats::ListStats;
-pub use seam::store::{ContactHistory, ContactKey};
-pub use seam::table::{MaterialTable, TableError};
-#[cfg(feature = "std")]
-pub use value::backend::Std;
-pub use value::backend::{Libm, MathBackend, Micromath};
-pub use value::body::{Sphere, effective_mass};
-pub use value::checked::CheckedSphere;
-pub use value::error::{ContactError, Parameter, ParameterError};
-pub use value::float::Float;
-pub use value::forces::{ContactForces, Interaction};
-pub use value::material::Material;
-pub use value::time_step::TimeStep;
-pub use value::vector::Vec3;
-pub use value::wall::{Wall, WallShape};
+// The crate's own code and docs name the prelude's items from the root.
+use prelude::*;

@@ -4,7 +4,7 @@
 //! Usage: `cargo run --release -p soft-sphere-ffi --example kharaz_reference [ANGLE]`.
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere, SpringDisplacement,
     TangentialParameters, Vec3, Wall,
 };

@@ -1,7 +1,7 @@
 //! The table a C host holds (`ss_table_*`): one family's table, picked by the configuration's
 //! law and rolling resistance from the registry's list, and the entry points that reach it.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ElasticMaterial, ElasticPlasticRolling, HertzImpact, HertzMixing, Law, Material, MindlinAA,
     Mixing,
 };

@@ -3,7 +3,9 @@
 
 use crate::real::Real;
 use crate::registry::AnyBound;
-use soft_sphere::{BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, Sphere, Vec3};
+use soft_sphere::prelude::{
+    BoundLaw, CheckedSphere, ContactError, Float, Interaction, Law, Sphere, Vec3,
+};
 
 use crate::*;
 

@@ -1,7 +1,7 @@
 //! The error, model and parameter codes every entry point speaks, and the kernel's errors
 //! mapped onto them.
 
-use soft_sphere::{ContactError, Parameter, ParameterError};
+use soft_sphere::prelude::{ContactError, Parameter, ParameterError};
 
 /// Success.
 pub const SS_OK: i32 = 0;

@@ -5,7 +5,7 @@ use crate::registry::{AnyBound, AnyLaw, Family, family};
 use crate::state::*;
 use crate::*;
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactLaw, Frictionless, Hertz, HertzImpact, Interaction,
     LinearSpringDashpot, Material, Sphere, TimeStep, Vec3, Wall,
 };

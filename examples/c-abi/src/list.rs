@@ -2,7 +2,7 @@
 //! neighbour pages, per-neighbour history) checked, gathered into the kernel's list seam,
 //! evaluated and scattered back, all or nothing.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, CheckedSphere, ContactList, Interaction, Law, ListError, ListOutput, ListStats,
     Mixing, Sphere, SphereArrays, Vec3, check_pairs,
 };
@@ -384,7 +384,7 @@ where
         for w in 0..walls.count {
             // SAFETY: `count` walls (the caller's promise).
             match crate::wall_of(unsafe { &*walls.walls.add(w) }) {
-                Ok(wall) => work.walls.push(soft_sphere::MaterialWall {
+                Ok(wall) => work.walls.push(soft_sphere::prelude::MaterialWall {
                     wall,
                     material: walls.material,
                 }),

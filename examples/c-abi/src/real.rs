@@ -1,6 +1,6 @@
 //! The precisions the C ABI offers.
 
-use soft_sphere::{Float, MathBackend, Std};
+use soft_sphere::prelude::{Float, MathBackend, Std};
 
 /// The precisions the C ABI offers, each with the math backend its laws take: `Std`, whose
 /// square root gives libm's bits and is one the compiler widens and keeps in vector registers

@@ -8,7 +8,7 @@
 //! a table both take, and those only a table takes (micro-slip, whose state does not fit
 //! `ss_state`).
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     BoundLaw, ContactLaw, Frictionless, Hertz, HertzImpact, HertzMixing, LinearMixing,
     LinearSpringDashpot, MindlinAA, MindlinAALuding, MindlinParameters, MindlinStateless, ModelAA,
     ModelAALuding, ParameterError, Stateless, TangentialParameters, TimeStep,
@@ -67,18 +67,20 @@ mod family {
     /// The linear spring-dashpot.
     pub(crate) mod linear {
         /// The law.
-        pub(crate) type Law<F, T> = soft_sphere::LinearLaw<F, T, <F as crate::real::Real>::Backend>;
+        pub(crate) type Law<F, T> =
+            soft_sphere::prelude::LinearLaw<F, T, <F as crate::real::Real>::Backend>;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
-            soft_sphere::LinearMixing<F, T, <F as crate::real::Real>::Backend>;
+            soft_sphere::prelude::LinearMixing<F, T, <F as crate::real::Real>::Backend>;
     }
     /// Hertz.
     pub(crate) mod hertz {
         /// The law.
-        pub(crate) type Law<F, T> = soft_sphere::HertzLaw<F, T, <F as crate::real::Real>::Backend>;
+        pub(crate) type Law<F, T> =
+            soft_sphere::prelude::HertzLaw<F, T, <F as crate::real::Real>::Backend>;
         /// The mixing rule.
         pub(crate) type Mixing<F, T> =
-            soft_sphere::HertzMixing<F, T, <F as crate::real::Real>::Backend>;
+            soft_sphere::prelude::HertzMixing<F, T, <F as crate::real::Real>::Backend>;
     }
 }
 

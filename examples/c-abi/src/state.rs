@@ -1,7 +1,7 @@
 //! How each law's per-contact state sits in the caller's memory: in an `ss_state` for the
 //! single-contact calls, as flat numbers in a host's per-neighbour history for the list entry.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactState, Float, MicroSlipSprings, MindlinSpring, RollingSpring, SpringDisplacement, Vec3,
 };
 

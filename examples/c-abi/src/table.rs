@@ -5,7 +5,7 @@
 //! per-neighbour history values and touch flags), which `list.rs` evaluates through the
 //! kernel's list seam.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, ElasticMaterial, ElasticPlasticRolling, HertzImpact, HertzMicroSlip, HertzMixing,
     Interaction, Law, LinearMaterial, ListError, Material, MaterialTable, MaterialWall,
     MathBackend, MicroSlip, MindlinAA, Mixing, NormalModel, ParameterError, Rotation, SphereArrays,
@@ -653,7 +653,7 @@ fn step_of_pairs<L: Law>(
     for (k, (&a, &mass_a)) in present.clone().enumerate() {
         for (&b, &mass_b) in present.clone().skip(k) {
             if evaluated[a as usize][b as usize] {
-                check(a, b, soft_sphere::effective_mass(mass_a, mass_b))?;
+                check(a, b, soft_sphere::prelude::effective_mass(mass_a, mass_b))?;
             }
         }
         for wall in walls {

@@ -1,7 +1,7 @@
 //! The plain structs a C host fills and reads: vectors, spheres, walls, law parameters,
 //! materials, the per-contact state and the forces.
 
-use soft_sphere::{Float, Sphere, Vec3};
+use soft_sphere::prelude::{Float, Sphere, Vec3};
 
 /// A vector of three components.
 #[repr(C)]

@@ -433,7 +433,7 @@ fn f32_bound_calls_give_the_shared_law_bits() {
 /// `spring_force` and `contact_radius`, and each bad Hertz input refused with its code.
 #[test]
 fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
-    use soft_sphere::{
+    use soft_sphere::prelude::{
         ContactLaw, Hertz, HertzImpact, Interaction, MindlinAA, MindlinParameters, MindlinSpring,
         Sphere, Vec3,
     };
@@ -493,7 +493,7 @@ fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
         velocity: v(0.0, 0.0, 0.0),
         ..ss_wall::default()
     };
-    let plane = soft_sphere::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
+    let plane = soft_sphere::prelude::Wall::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1.0)).unwrap();
     // A turning drum about an axis along x whose lowest line is the floor's.
     let drum = ss_wall {
         point: v(0.0, 0.0, 0.5),
@@ -502,10 +502,13 @@ fn hertz_models_give_the_kernels_bits_and_refuse_bad_materials() {
         spin: 3.0,
         ..floor
     };
-    let turning =
-        soft_sphere::Wall::cylinder(Vec3::new(0.0, 0.0, 0.5), Vec3::new(2.0, 0.0, 0.0), 0.5)
-            .and_then(|w| w.with_spin(3.0))
-            .unwrap();
+    let turning = soft_sphere::prelude::Wall::cylinder(
+        Vec3::new(0.0, 0.0, 0.5),
+        Vec3::new(2.0, 0.0, 0.0),
+        0.5,
+    )
+    .and_then(|w| w.with_spin(3.0))
+    .unwrap();
     // A radius of -0.0 is a plane, as 0.0 is.
     let signed = ss_wall {
         radius: -0.0,

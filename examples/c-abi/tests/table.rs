@@ -1398,14 +1398,14 @@ fn kernel_steps(
     host: &mut Host,
     steps: usize,
     mut contact: impl FnMut(
-        &soft_sphere::Sphere<f64>,
-        &soft_sphere::Sphere<f64>,
+        &soft_sphere::prelude::Sphere<f64>,
+        &soft_sphere::prelude::Sphere<f64>,
         &ss_coefficients<f64>,
         &ss_coefficients<f64>,
         &mut [f64],
-    ) -> Option<soft_sphere::ContactForces<f64>>,
+    ) -> Option<soft_sphere::prelude::ContactForces<f64>>,
 ) {
-    use soft_sphere::{Sphere, Vec3};
+    use soft_sphere::prelude::{Sphere, Vec3};
     let vector = |a: &[f64], k: usize| Vec3::new(a[3 * k], a[3 * k + 1], a[3 * k + 2]);
     let (n, values) = (host.radius.len(), host.values);
     for _ in 0..steps {
@@ -1455,7 +1455,7 @@ fn kernel_steps(
 
 #[test]
 fn rolling_resistance_gives_the_kernel_laws_bits() {
-    use soft_sphere::{
+    use soft_sphere::prelude::{
         ContactLaw, ElasticPlasticRolling, Interaction, LinearSpringDashpot, ModelAA,
         RollingSpring, SpringDisplacement, TangentialParameters, Vec3,
     };
@@ -1811,7 +1811,7 @@ fn rolling_comes_with_every_family_that_has_friction() {
 /// (the normal, the contact radius, the positions, then the displacements).
 #[test]
 fn micro_slip_gives_the_kernel_laws_bits() {
-    use soft_sphere::{
+    use soft_sphere::prelude::{
         ContactLaw, Hertz, HertzImpact, Interaction, Material, MicroSlip, MicroSlipSprings,
         MindlinParameters, Vec3,
     };

@@ -12,7 +12,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed_loop::BoxScene;
 use panic_semihosting as _;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactError, ContactLaw, Frictionless, Interaction, Libm, LinearLaw, LinearSpringDashpot,
     ModelA, ModelAA, ModelB, ModelC, Sphere, Stateless, TangentialModel, TangentialParameters,
     TimeStep, Vec3,

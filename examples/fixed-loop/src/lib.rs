@@ -22,7 +22,7 @@
 #![deny(missing_docs)]
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, ContactError, ContactHistory, ContactKey, ContactLaw, Interaction, Libm,
     LinearLaw, LinearSpringDashpot, MathBackend, Micromath, ModelAA, ParameterError, Sphere,
     SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall, effective_mass,

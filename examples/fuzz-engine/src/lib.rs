@@ -6,7 +6,7 @@
 use std::collections::HashMap;
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactError, ContactForces, ContactLaw, Interaction, LinearAA, LinearSpringDashpot, ModelAA,
     Sphere, SpringDisplacement, TangentialParameters, TimeStep, Vec3, Wall,
 };
@@ -50,7 +50,7 @@ impl Engine {
         spheres: Vec<Sphere<f64>>,
         walls: Vec<Wall<f64>>,
         (stiffness, restitution, friction): (f64, f64, f64),
-    ) -> Result<Self, soft_sphere::ParameterError> {
+    ) -> Result<Self, soft_sphere::prelude::ParameterError> {
         let law = ContactLaw::new(
             LinearSpringDashpot::new(stiffness, restitution)?,
             ModelAA(TangentialParameters::new(

@@ -4,8 +4,8 @@ use arbitrary::{Arbitrary, Unstructured};
 use fuzz_engine::Engine;
 use proptest::prelude::*;
 use soft_sphere::checks;
+use soft_sphere::prelude::{Sphere, Wall};
 use soft_sphere::strategies::{collision, touching_pair};
-use soft_sphere::{Sphere, Wall};
 
 proptest! {
     /// Any binary collision, and the same sphere onto a wall: Coulomb at every contact, and no

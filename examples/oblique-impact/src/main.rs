@@ -9,7 +9,7 @@
 use std::error::Error;
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Interaction, LinearSpringDashpot, ModelA, ModelAA, ModelAALuding, ModelB, ModelC,
     Sphere, Stateless, TangentialModel, TangentialParameters, Vec3, Wall,
 };

@@ -20,7 +20,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ElasticMaterial, HertzAA, HertzImpact, HertzMixing, Material, MaterialTable, MaterialWall,
     MindlinAA, Sphere, Vec3, Wall,
 };

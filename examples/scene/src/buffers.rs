@@ -2,7 +2,7 @@
 //! [`Scene::buffer_sizes`](crate::Scene::buffer_sizes), fills them with `Default::default()`,
 //! and keeps them together between scenes (the contact history lives in them).
 
-use soft_sphere::{Interaction, PairLoad, Vec3};
+use soft_sphere::prelude::{Interaction, PairLoad, Vec3};
 
 use crate::parking::Parking;
 
@@ -54,7 +54,7 @@ pub struct SceneBuffers<'a, F, S, const K: usize> {
     /// view and does no energy accounting.
     pub records: &'a mut [Interaction<F>],
     /// Each pair's loads while its thread hands them on (working memory of
-    /// [`MaterialTable::evaluate_on`](soft_sphere::MaterialTable::evaluate_on)), or empty: then
+    /// [`MaterialTable::evaluate_on`](soft_sphere::prelude::MaterialTable::evaluate_on)), or empty: then
     /// the pairs are evaluated on one thread, whatever the executor.
     pub loads: &'a mut [PairLoad<F>],
 }

@@ -11,7 +11,7 @@
 //! balance `kinetic + rotational + stored + dissipated - gravity_work - wall_work` is then
 //! constant to rounding (`docs/physics.md`, 4.3).
 
-use soft_sphere::{Float, Interaction, Law, MaterialTable, Vec3};
+use soft_sphere::prelude::{Float, Interaction, Law, MaterialTable, Vec3};
 
 use crate::{Scene, StepStats, WallSet};
 

@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use soft_sphere::{ContactError, ListError, ParameterError};
+use soft_sphere::prelude::{ContactError, ListError, ParameterError};
 
 use crate::limits::MAX_CELLS;
 

@@ -5,7 +5,7 @@
 //! each cell and the 13 cells of its half shell, so each pair is seen once and the cost grows with
 //! the number of spheres, not its square. Periodic directions use the minimum image.
 
-use soft_sphere::{CheckedSphere, Float, Vec3};
+use soft_sphere::prelude::{CheckedSphere, Float, Vec3};
 
 use crate::error::SceneError;
 use crate::limits::MAX_CELLS;

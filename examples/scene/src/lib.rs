@@ -6,7 +6,7 @@
 //! pairs and the integration can be spread over a caller's [`Executor`] with the same bits.
 //!
 //! It reaches the contact laws only through the kernel's list seam
-//! ([`MaterialTable::evaluate`](soft_sphere::MaterialTable::evaluate)): each step hands it the
+//! ([`MaterialTable::evaluate`](soft_sphere::prelude::MaterialTable::evaluate)): each step hands it the
 //! whole Verlet list (pairs, periodic shifts, states) and the walls over the scene's
 //! [`CheckedSphere`]s and their material ids, and the seam picks each contact's law from the
 //! table, checks it against the step, and adds the forces in list order. Contacts are owned by
@@ -71,7 +71,7 @@ pub use walls::{NoWalls, WallSet};
 
 use core::marker::PhantomData;
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedSphere, Float, Interaction, Law, MaterialTable, PairList, PairLoad, SphereSlice,
     TimeStep, Vec3,
 };
@@ -182,7 +182,7 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
 /// [`SceneError::Sphere`] with its index and what is wrong with it.
 ///
 /// ```
-/// use soft_sphere::{ContactError, Sphere, Vec3};
+/// use soft_sphere::prelude::{ContactError, Sphere, Vec3};
 /// use soft_sphere_scene::{SceneError, check_spheres};
 ///
 /// let good = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3), 1.0e-3, 2500.0_f64);
@@ -195,7 +195,7 @@ pub struct Scene<'a, L: Law, W, const K: usize> {
 /// );
 /// ```
 pub fn check_spheres<F: Float>(
-    spheres: impl IntoIterator<Item = soft_sphere::Sphere<F>>,
+    spheres: impl IntoIterator<Item = soft_sphere::prelude::Sphere<F>>,
 ) -> impl Iterator<Item = Result<CheckedSphere<F>, SceneError>> {
     spheres.into_iter().enumerate().map(|(index, sphere)| {
         CheckedSphere::new(sphere).map_err(|error| SceneError::Sphere { index, error })

@@ -3,7 +3,7 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use soft_sphere::{CheckedSphere, Interaction, Law, PairLoad, Sphere, Vec3};
+use soft_sphere::prelude::{CheckedSphere, Interaction, Law, PairLoad, Sphere, Vec3};
 
 use crate::energy::Ledger;
 use crate::parallel::{Executor, Serial};
@@ -27,10 +27,7 @@ pub const PARKING: usize = 16;
 /// over from one to the next.
 ///
 /// ```
-/// use soft_sphere::{
-///     ContactLaw, LinearSpringDashpot, MaterialTable, MaterialWall, ModelAA, Sphere,
-///     TangentialParameters, Vec3, Wall,
-/// };
+/// use soft_sphere::prelude::{ContactLaw, LinearSpringDashpot, MaterialTable, MaterialWall, ModelAA, Sphere, TangentialParameters, Vec3, Wall};
 /// use soft_sphere_scene::{Domain, Integrator, OwnedScene, StepInput};
 ///
 /// let law = ContactLaw::new(
@@ -99,7 +96,8 @@ impl<L: Law, W: WallSet<L::Float> + Clone> OwnedScene<L, W> {
         let largest = largest_diameter(&spheres, &domain);
         let sizes =
             Scene::<L, W, PARKING>::buffer_sizes(&domain, (largest, skin), n, capacity, false)?;
-        let skin_ok = skin >= soft_sphere::Float::ZERO && soft_sphere::Float::is_finite(skin);
+        let skin_ok = skin >= soft_sphere::prelude::Float::ZERO
+            && soft_sphere::prelude::Float::is_finite(skin);
         if !skin_ok {
             return Err(SceneError::Domain);
         }
@@ -297,7 +295,10 @@ impl<L: Law, W: WallSet<L::Float> + Clone, const K: usize> OwnedScene<L, W, K> {
 /// The diameter that sizes an owned scene's cells: its largest sphere's, or, with no sphere, a
 /// quarter of the domain's shortest side (cells of any size hold no contact; a periodic
 /// direction needs three).
-fn largest_diameter<F: soft_sphere::Float>(spheres: &[CheckedSphere<F>], domain: &Domain<F>) -> F {
+fn largest_diameter<F: soft_sphere::prelude::Float>(
+    spheres: &[CheckedSphere<F>],
+    domain: &Domain<F>,
+) -> F {
     if spheres.is_empty() {
         let [x, y, z] = (domain.upper - domain.lower).to_array();
         let quarter = F::HALF * F::HALF;

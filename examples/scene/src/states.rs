@@ -3,7 +3,7 @@
 //! a committed step swaps the two. The caller's `states` buffer holds the current ones in front
 //! again once the scene is dropped ([`SceneBuffers`](crate::SceneBuffers)).
 
-use soft_sphere::Law;
+use soft_sphere::prelude::Law;
 
 use crate::Scene;
 
@@ -30,7 +30,7 @@ impl<L: Law, W, const K: usize> Drop for Scene<'_, L, W, K> {
 // The owned scene makes the buffers (the `alloc` feature, which the workspace's tests enable).
 #[cfg(all(test, feature = "alloc"))]
 mod tests {
-    use soft_sphere::{
+    use soft_sphere::prelude::{
         ContactLaw, LinearSpringDashpot, MaterialTable, ModelAA, Sphere, TangentialParameters, Vec3,
     };
 

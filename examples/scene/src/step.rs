@@ -5,7 +5,7 @@
 use core::array;
 
 use soft_sphere::motion::Kick;
-use soft_sphere::{ContactList, Float, Law, ListOutput, SphereSlice, Vec3};
+use soft_sphere::prelude::{ContactList, Float, Law, ListOutput, SphereSlice, Vec3};
 
 use crate::parallel::{Executor, MAX_PIECES, Serial, piece_length};
 use crate::{Energy, Integrator, Scene, StepError, StepInput, StepStats, WallSet};
@@ -23,7 +23,7 @@ impl<F: Float> KickMemo<F> {
         Self {
             kind: [F::ZERO; 2],
             kick: Kick::new(
-                &soft_sphere::Sphere::at_rest(Vec3::ZERO, F::ONE, F::ONE),
+                &soft_sphere::prelude::Sphere::at_rest(Vec3::ZERO, F::ONE, F::ONE),
                 F::ONE,
             ),
             dt,
@@ -31,7 +31,7 @@ impl<F: Float> KickMemo<F> {
     }
 
     #[inline(always)]
-    fn get(&mut self, sphere: &soft_sphere::Sphere<F>) -> Kick<F> {
+    fn get(&mut self, sphere: &soft_sphere::prelude::Sphere<F>) -> Kick<F> {
         let kind = [sphere.mass, sphere.radius];
         if kind != self.kind {
             self.kind = kind;
@@ -43,7 +43,7 @@ impl<F: Float> KickMemo<F> {
 
 /// One piece of an integration phase: a stretch of spheres.
 struct AdvancePiece<'p, F> {
-    spheres: &'p mut [soft_sphere::CheckedSphere<F>],
+    spheres: &'p mut [soft_sphere::prelude::CheckedSphere<F>],
     force: &'p [Vec3<F>],
     torque: &'p [Vec3<F>],
     anchor: &'p [Vec3<F>],
@@ -71,7 +71,7 @@ impl<L: Law, W: WallSet<L::Float>, const K: usize> Scene<'_, L, W, K> {
     }
 
     /// One step of the scene spread over `executor`'s threads: the pairs through the kernel's
-    /// list seam ([`MaterialTable::evaluate_on`](soft_sphere::MaterialTable::evaluate_on), when
+    /// list seam ([`MaterialTable::evaluate_on`](soft_sphere::prelude::MaterialTable::evaluate_on), when
     /// the scene has its per-pair loads), the integration in stretches of spheres. The result is
     /// the same bits for any executor and any number of threads.
     ///

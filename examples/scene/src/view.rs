@@ -1,7 +1,7 @@
 //! The per-contact view: which bodies touch after a step, and how (for force chains and
 //! analysis), read from the records the kernel's list seam wrote.
 
-use soft_sphere::{ContactForces, Interaction, Law};
+use soft_sphere::prelude::{ContactForces, Interaction, Law};
 
 use crate::{Scene, WallSet};
 

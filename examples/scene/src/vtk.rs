@@ -24,7 +24,7 @@ use std::string::String;
 use std::vec::Vec;
 use std::{format, write, writeln};
 
-use soft_sphere::{Float, Law, Vec3};
+use soft_sphere::prelude::{Float, Law, Vec3};
 
 use crate::{ContactBodies, Scene, WallSet};
 
@@ -33,10 +33,7 @@ use crate::{ContactBodies, Scene, WallSet};
 /// still leaves a collection of the frames it wrote.
 ///
 /// ```
-/// use soft_sphere::{
-///     ContactLaw, Frictionless, LinearSpringDashpot, MaterialTable, MaterialWall, Sphere, Vec3,
-///     Wall,
-/// };
+/// use soft_sphere::prelude::{ContactLaw, Frictionless, LinearSpringDashpot, MaterialTable, MaterialWall, Sphere, Vec3, Wall};
 /// use soft_sphere_scene::{Domain, Frames, Integrator, OwnedScene, StepInput};
 ///
 /// let law = ContactLaw::new(LinearSpringDashpot::new(1.0e4_f64, 0.5).unwrap(), Frictionless);

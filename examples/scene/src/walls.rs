@@ -1,10 +1,10 @@
 //! The walls of a scene as a compile-time slot: a scene without walls pays nothing for them.
 
-use soft_sphere::{Float, MaterialWall};
+use soft_sphere::prelude::{Float, MaterialWall};
 
 /// The walls of a scene, chosen at compile time: [`NoWalls`] costs nothing. The number of walls
 /// is the type's, so the scene sizes its wall states from it. Each wall carries a material id
-/// of the step's [`MaterialTable`](soft_sphere::MaterialTable).
+/// of the step's [`MaterialTable`](soft_sphere::prelude::MaterialTable).
 pub trait WallSet<F: Float>: Sync {
     /// How many walls.
     const COUNT: usize;

@@ -9,7 +9,7 @@ use std::error::Error;
 use std::hint::black_box;
 
 use host_tests::pairs::touching_pairs;
-use soft_sphere::{
+use soft_sphere::prelude::{
     BoundLaw, CheckedSphere, ContactLaw, Hertz, HertzImpact, Interaction, Law, LinearSpringDashpot,
     MindlinAA, MindlinParameters, ModelAA, TangentialParameters, effective_mass,
 };
@@ -42,7 +42,7 @@ fn run<L: Law<Float = f64>>(law: L, rounds: usize) -> Result<usize, Box<dyn Erro
     let pairs: Vec<_> = touching_pairs::<f64>(PAIRS)
         .into_iter()
         .map(|(i, j)| Ok((CheckedSphere::new(i)?, CheckedSphere::new(j)?)))
-        .collect::<Result<_, soft_sphere::ContactError>>()?;
+        .collect::<Result<_, soft_sphere::prelude::ContactError>>()?;
     let m = effective_mass(pairs[0].0.mass, pairs[0].1.mass);
     let mut bound = law.at(law.time_step(law.recommended_time_step(m), m)?);
     let mut states = vec![L::State::default(); PAIRS];

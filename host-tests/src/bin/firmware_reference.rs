@@ -7,7 +7,7 @@
 use std::process::ExitCode;
 
 use fixed_loop::BoxScene;
-use soft_sphere::Libm;
+use soft_sphere::prelude::Libm;
 
 fn main() -> ExitCode {
     let steps: u32 = match std::env::args().nth(1).map(|a| a.parse()) {

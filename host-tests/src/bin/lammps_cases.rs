@@ -18,7 +18,7 @@ use host_tests::impact::{Integrator, incoming_sphere};
 use host_tests::validation::chung_ooi::{self, Contact};
 use host_tests::validation::kharaz::{self, Model, TALK};
 use host_tests::validation::plate;
-use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot};
+use soft_sphere::prelude::{ContactLaw, Frictionless, LinearSpringDashpot};
 
 /// The deck of one sphere against the floor `zplane 0`, reporting its final velocity and spin.
 fn deck(

@@ -15,7 +15,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use host_tests::random::Xorshift;
-use soft_sphere::{
+use soft_sphere::prelude::{
     CheckedPairs, CheckedSphere, ContactLaw, ContactList, Interaction, Law, LinearMaterial,
     LinearMixing, LinearSpringDashpot, ListOutput, MaterialTable, ModelAA, Sphere, SphereArrays,
     SpringDisplacement, Std, TimeStep, Vec3,

@@ -20,7 +20,7 @@ use host_tests::scene::{
     Column, OwnedScene, SceneExt, Threads, pair_and_wall, positions_csv, wall_of,
     wall_restitution_for_same_dashpot, write_lammps_data,
 };
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, Law, LinearMaterial, LinearMixing, LinearSpring, LinearSpringDashpot,
     MaterialTable, MaterialWall, ModelAA, Sphere, Std, TangentialParameters, Vec3, Wall,
 };

@@ -456,7 +456,7 @@ fn plot_plate(out_dir: &Path, plate: &CaseOutput) -> Result<(), Box<dyn Error>> 
 /// each law's accuracy limit marked: `accuracy_rebound.csv` and `.svg`.
 fn plot_accuracy(out_dir: &Path) -> Result<(), Box<dyn Error>> {
     use host_tests::impact::{floor, incoming_sphere, wall_impact};
-    use soft_sphere::{
+    use soft_sphere::prelude::{
         ContactLaw, Frictionless, Hertz, HertzImpact, LinearSpringDashpot, NormalModel,
     };
 

@@ -27,7 +27,7 @@ use host_tests::scene::{
 };
 use host_tests::validation::kharaz::TALK;
 use host_tests::validation::{Cell, Table};
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Float, Libm, LinearSpringDashpot, MathBackend, Micromath, ModelAA, Sphere,
     TangentialParameters, Vec3, Wall,
 };

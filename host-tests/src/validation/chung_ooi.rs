@@ -3,7 +3,7 @@
 //! linear Model AA, against Hertz's closed forms, rigid-body theory, the Kharaz experiment and the
 //! benchmark's published reference curves.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, Hertz, HertzImpact, HertzMicroSlip, Law, LinearAA,
     LinearSpringDashpot, Material, MicroSlip, MindlinAA, MindlinAALuding, MindlinParameters,
     MindlinStateless, ModelAA, Sphere, TangentialParameters, Vec3, effective_mass,
@@ -279,7 +279,10 @@ pub fn sphere_of(solid: &Solid, radius: f64) -> Sphere<f64> {
 }
 
 /// The step for `law`: its contact duration over [`STEPS_PER_CONTACT`], checked.
-fn step_for<L: Law<Float = f64>>(law: &L, effective_mass: f64) -> soft_sphere::TimeStep<f64> {
+fn step_for<L: Law<Float = f64>>(
+    law: &L,
+    effective_mass: f64,
+) -> soft_sphere::prelude::TimeStep<f64> {
     step_with(law, effective_mass, STEPS_PER_CONTACT)
 }
 
@@ -288,7 +291,7 @@ fn step_with<L: Law<Float = f64>>(
     law: &L,
     effective_mass: f64,
     steps: f64,
-) -> soft_sphere::TimeStep<f64> {
+) -> soft_sphere::prelude::TimeStep<f64> {
     let duration = law.contact_duration(effective_mass);
     // A contact that never ends (e = 0) takes the step of its undamped half-period.
     let duration = if duration.is_finite() {

@@ -1,7 +1,7 @@
 //! docs/physics.md, sections 5.2 and 5.4: the Kharaz oblique impact with every tangential model, against the
 //! experiment, rigid-body theory, the MFiX DEM05 linear-model reference, and itself at a fine step.
 
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, LinearSpringDashpot, ModelA, ModelAA, ModelAALuding, ModelB, ModelC, Stateless,
     TangentialModel, TangentialParameters,
 };

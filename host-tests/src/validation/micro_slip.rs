@@ -2,10 +2,10 @@
 //! against Mindlin & Deresiewicz's closed form, at every breakpoint count and contact size
 //! (`microslip_loops.csv`).
 
-use soft_sphere::{
-    Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialInput,
-    TangentialModel, Vec3,
+use soft_sphere::prelude::{
+    Libm, MicroSlip, MicroSlipSprings, MindlinParameters, NormalOscillator, TangentialModel, Vec3,
 };
+use soft_sphere::slots::TangentialInput;
 
 use super::{CaseOutput, Table};
 use crate::analytic::{cycle_dissipation, full_slip_displacement};

@@ -1,7 +1,7 @@
 //! docs/physics.md, section 5.1: head-on impacts against the closed forms, free and with the normal force
 //! clipped at zero, and how the shipped integrators converge with the step.
 
-use soft_sphere::{ContactLaw, Frictionless, LinearSpringDashpot, NormalModel, Vec3};
+use soft_sphere::prelude::{ContactLaw, Frictionless, LinearSpringDashpot, NormalModel, Vec3};
 
 use super::{CaseOutput, Table};
 use crate::analytic::{
@@ -48,7 +48,8 @@ fn head_on_with<N: NormalModel<f64>>(
     integrator: Integrator,
 ) -> ImpactOutcome<f64> {
     let law = ContactLaw::new(normal, Frictionless).without_rotation();
-    let mut sphere = soft_sphere::Sphere::solid(Vec3::new(0.0, 0.0, RADIUS), RADIUS, DENSITY);
+    let mut sphere =
+        soft_sphere::prelude::Sphere::solid(Vec3::new(0.0, 0.0, RADIUS), RADIUS, DENSITY);
     sphere.velocity = Vec3::new(0.0, 0.0, -SPEED);
     let dt = law
         .coarse_time_step(
@@ -62,7 +63,7 @@ fn head_on_with<N: NormalModel<f64>>(
 }
 
 fn mass() -> f64 {
-    soft_sphere::Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass
+    soft_sphere::prelude::Sphere::solid(Vec3::ZERO, RADIUS, DENSITY).mass
 }
 
 /// The normal-impact table at t_c/1000 with its checks, and the convergence table.

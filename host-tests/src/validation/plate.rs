@@ -1,7 +1,7 @@
 //! docs/physics.md, section 5.3: a sphere launched sliding without spin on a plate, under gravity, until it rolls.
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ContactLaw, Frictionless, Interaction, LinearSpringDashpot, Sphere, TangentialModel,
     TangentialParameters, Vec3,
 };

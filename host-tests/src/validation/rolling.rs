@@ -4,7 +4,7 @@
 //! above it lets it roll down at the closed-form acceleration.
 
 use soft_sphere::motion::advance_solid_sphere;
-use soft_sphere::{
+use soft_sphere::prelude::{
     ConstantRolling, ContactLaw, ElasticPlasticRolling, Interaction, Law, LinearSpringDashpot,
     ModelAA, RollingModel, Sphere, TangentialParameters, Vec3,
 };
@@ -38,7 +38,7 @@ fn sphere_mass() -> f64 {
 /// The contact law with rolling slot `rolling`.
 fn law<Ro: RollingModel<f64>>(
     rolling: Ro,
-) -> impl Law<Float = f64, State = Ro::State<soft_sphere::SpringDisplacement<f64>>> {
+) -> impl Law<Float = f64, State = Ro::State<soft_sphere::prelude::SpringDisplacement<f64>>> {
     let normal = LinearSpringDashpot::new(NORMAL_STIFFNESS, RESTITUTION).expect("valid");
     let p = TangentialParameters::new(TANGENTIAL_STIFFNESS, 0.5, FRICTION).expect("valid");
     ContactLaw::new(normal, ModelAA(p)).with_rolling(rolling)
@@ -83,7 +83,7 @@ fn run<L: Law<Float = f64>>(law: &L, slope_deg: f64, speed: f64, duration: f64) 
     let mut series = Vec::new();
     let steps = (duration / seconds).ceil() as usize;
     for step in 1..=steps {
-        let checked = soft_sphere::CheckedSphere::new(sphere).expect("a valid sphere");
+        let checked = soft_sphere::prelude::CheckedSphere::new(sphere).expect("a valid sphere");
         let (force, torque) = match bound.sphere_wall(&checked, &wall, &mut state) {
             Ok(Interaction::Touching(c)) => (c.force_on_i(), c.torque_on_i),
             Ok(Interaction::Apart) => panic!("the sphere left the plate"),

@@ -4,8 +4,8 @@
 //!
 //! ```
 //! use soft_sphere::checks;
-//! use soft_sphere::{ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere};
-//! use soft_sphere::{SpringDisplacement, TangentialParameters, Vec3};
+//! use soft_sphere::prelude::{ContactLaw, Interaction, LinearSpringDashpot, ModelAA, Sphere};
+//! use soft_sphere::prelude::{SpringDisplacement, TangentialParameters, Vec3};
 //!
 //! let law = ContactLaw::new(
 //!     LinearSpringDashpot::new(1000.0_f64, 0.9).unwrap(),

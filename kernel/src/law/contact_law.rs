@@ -30,7 +30,7 @@ use crate::value::wall::Wall;
 /// and [`with_lever_arm`](ContactLaw::with_lever_arm).
 ///
 /// ```
-/// use soft_sphere::{
+/// use soft_sphere::prelude::{
 ///     ContactLaw, Frictionless, Interaction, LinearSpringDashpot, Micromath, NonRotating, Sphere,
 ///     Vec3, Wall,
 /// };

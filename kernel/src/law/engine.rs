@@ -33,7 +33,7 @@ pub(crate) mod sealed {
 /// knowing which slots it was built from. Sealed.
 ///
 /// ```
-/// use soft_sphere::{CheckedSphere, ContactError, Interaction, Law, TimeStep};
+/// use soft_sphere::prelude::{CheckedSphere, ContactError, Interaction, Law, TimeStep};
 ///
 /// /// An engine's inner loop over a list of pairs, for any law.
 /// fn pair_forces<L: Law>(
@@ -52,7 +52,7 @@ pub(crate) mod sealed {
 ///     }
 ///     Ok(touching)
 /// }
-/// # use soft_sphere::{ContactLaw, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3};
+/// # use soft_sphere::prelude::{ContactLaw, LinearSpringDashpot, ModelAA, Sphere, TangentialParameters, Vec3};
 /// # let law = ContactLaw::new(
 /// #     LinearSpringDashpot::new(1.0e4_f64, 0.8).unwrap(),
 /// #     ModelAA(TangentialParameters::new(3.0e3, 0.5, 0.4).unwrap()),

@@ -65,7 +65,7 @@ pub struct LinearMaterial<F> {
 /// example `ModelAA` or `Stateless`: a tuple struct's name is its constructor).
 ///
 /// ```
-/// use soft_sphere::{LinearMaterial, LinearMixing, Mixing, ModelAA};
+/// use soft_sphere::prelude::{LinearMaterial, LinearMixing, Mixing, ModelAA};
 /// let glass = LinearMaterial {
 ///     normal_stiffness: 1.0e4_f64, restitution: 0.9, tangential_stiffness: 8.0e3,
 ///     dashpot_ratio: 0.5, friction: 0.4,
@@ -142,7 +142,9 @@ pub struct ElasticMaterial<F> {
 /// example `MindlinAA`).
 ///
 /// ```
-/// use soft_sphere::{ElasticMaterial, HertzImpact, HertzMixing, Material, MindlinAA, Mixing};
+/// use soft_sphere::prelude::{
+///     ElasticMaterial, HertzImpact, HertzMixing, Material, MindlinAA, Mixing,
+/// };
 /// let steel = ElasticMaterial {
 ///     elasticity: Material::new(208.0e9_f64, 0.3).unwrap(),
 ///     restitution: 0.9, dashpot_ratio: 0.0, friction: 0.3,

@@ -247,9 +247,9 @@ impl<L: Law, const MATERIALS: usize> MaterialTable<L, MATERIALS> {
     /// swaps its two state buffers only after a call that succeeded.
     ///
     /// ```
-    /// use soft_sphere::{
-    ///     CheckedPairs, ContactList, LinearMaterial, LinearMixing, ListOutput,
-    ///     MaterialTable, ModelAA, SphereArrays, Vec3,
+    /// use soft_sphere::prelude::{
+    ///     CheckedPairs, ContactList, LinearMaterial, LinearMixing, ListOutput, MaterialTable,
+    ///     ModelAA, SphereArrays, Vec3,
     /// };
     ///
     /// let glass = LinearMaterial {

@@ -26,7 +26,7 @@ use crate::value::vector::{Vec3, all_finite};
 /// per pair; what it holds afterwards is unspecified.
 ///
 /// ```
-/// use soft_sphere::{ListError, Vec3, check_pairs};
+/// use soft_sphere::prelude::{ListError, Vec3, check_pairs};
 ///
 /// let mut order = [0; 3];
 /// let none: &[Vec3<f64>] = &[];
@@ -143,7 +143,7 @@ fn compare_shifts<F: Float>(a: &[F; 3], b: &[F; 3]) -> Ordering {
 /// was built.
 ///
 /// ```
-/// use soft_sphere::{CheckedPairs, ListError, Vec3};
+/// use soft_sphere::prelude::{CheckedPairs, ListError, Vec3};
 ///
 /// let none: &[Vec3<f64>] = &[];
 /// let pairs = CheckedPairs::new(&[[0, 1], [1, 2]], none, 3).unwrap();
@@ -223,7 +223,7 @@ impl<'a, F: Float> CheckedPairs<'a, F> {
 /// ([`PairList::checked`]) costs no check. Between builds only the list itself can change it.
 ///
 /// ```
-/// use soft_sphere::{ListError, PairList, Vec3};
+/// use soft_sphere::prelude::{ListError, PairList, Vec3};
 ///
 /// let (mut pairs, mut shifts) = ([[0; 2]; 4], [Vec3::<f64>::ZERO; 4]);
 /// let mut list = PairList::new(&mut pairs, &mut shifts).unwrap();

@@ -35,7 +35,7 @@ impl ContactKey {
 /// [`ContactError::HistoryFull`], and nothing already stored is changed.
 ///
 /// ```
-/// use soft_sphere::{
+/// use soft_sphere::prelude::{
 ///     ContactError, ContactHistory, ContactKey, ContactLaw, LinearSpringDashpot, ModelAA, Sphere,
 ///     SpringDisplacement, TangentialParameters, Vec3,
 /// };

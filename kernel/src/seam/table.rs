@@ -13,7 +13,7 @@ use crate::value::error::ParameterError;
 /// step checked against the spheres actually present ([`MaterialTable::time_step`]).
 ///
 /// ```
-/// use soft_sphere::{LinearMaterial, LinearMixing, MaterialTable, ModelAA};
+/// use soft_sphere::prelude::{LinearMaterial, LinearMixing, MaterialTable, ModelAA};
 ///
 /// let glass = LinearMaterial {
 ///     normal_stiffness: 1.0e4_f64, restitution: 0.9, tangential_stiffness: 8.0e3,
@@ -28,7 +28,7 @@ use crate::value::error::ParameterError;
 /// table.set(1, 0, rough.unwrap()).unwrap();
 /// assert!((table.law(0, 1).unwrap().tangential().0.friction() - 0.6).abs() < 1e-15);
 /// assert!(table.law(0, 2).is_none()); // past the table
-/// # use soft_sphere::Mixing;
+/// # use soft_sphere::prelude::Mixing;
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct MaterialTable<L, const MATERIALS: usize> {

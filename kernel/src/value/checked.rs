@@ -15,7 +15,7 @@ use crate::value::vector::{Vec3, all_finite};
 /// It reads as a [`Sphere`] through `Deref`.
 ///
 /// ```
-/// use soft_sphere::{CheckedSphere, ContactError, Sphere, Vec3};
+/// use soft_sphere::prelude::{CheckedSphere, ContactError, Sphere, Vec3};
 ///
 /// let sphere = Sphere::solid(Vec3::new(0.0, 0.0, 1.0e-3), 1.0e-3, 2500.0_f64);
 /// let mut checked = CheckedSphere::new(sphere).unwrap();
@@ -61,7 +61,7 @@ impl<F: Float> CheckedSphere<F> {
     /// checked.
     ///
     /// ```
-    /// use soft_sphere::{CheckedSphere, ContactError, Sphere, Vec3};
+    /// use soft_sphere::prelude::{CheckedSphere, ContactError, Sphere, Vec3};
     ///
     /// let sphere = Sphere::solid(Vec3::ZERO, 1.0e-3, 2500.0_f64);
     /// let mut checked = CheckedSphere::new(sphere).unwrap();

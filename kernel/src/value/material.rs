@@ -6,7 +6,7 @@ use crate::value::float::Float;
 /// An isotropic elastic material: Young's modulus `E` and Poisson's ratio `nu`.
 ///
 /// ```
-/// use soft_sphere::Material;
+/// use soft_sphere::prelude::Material;
 /// let steel = Material::new(208.0e9_f64, 0.3).unwrap();
 /// // E* = E / (2 (1 - nu^2)) between two steel spheres, E / (1 - nu^2) against a rigid wall.
 /// assert!((steel.effective_modulus(&steel) - 114.29e9).abs() < 0.01e9);

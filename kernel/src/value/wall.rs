@@ -79,7 +79,7 @@ impl<F: Float> Wall<F> {
     /// length; normalised here, once, with the reference backend), with the spheres inside.
     ///
     /// ```
-    /// use soft_sphere::{Vec3, Wall};
+    /// use soft_sphere::prelude::{Vec3, Wall};
     /// let drum = Wall::cylinder(Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), 0.1_f64).unwrap();
     /// // A centre 0.08 m from the axis is 0.02 m from the surface.
     /// assert!((drum.distance_to(Vec3::new(0.08, 0.0, 5.0)) - 0.02).abs() < 1e-15);

@@ -35,7 +35,7 @@ pub struct HertzImpact<F> {
 /// overlap creeps back to zero), as critical damping is for the linear law.
 ///
 /// ```
-/// use soft_sphere::{Hertz, HertzImpact, Material};
+/// use soft_sphere::prelude::{Hertz, HertzImpact, Material};
 /// let alumina = Material::new(380.0e9_f64, 0.23).unwrap();
 /// let largest = HertzImpact { speed: 3.9, effective_radius: 2.5e-3 };
 /// let law = Hertz::new(alumina.modulus_against_rigid(), 0.5, largest).unwrap();

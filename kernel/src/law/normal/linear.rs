@@ -67,7 +67,7 @@ impl<F: Float> LinearSpringDashpot<F> {
     /// then returns `rebound`.
     ///
     /// ```
-    /// use soft_sphere::LinearSpringDashpot;
+    /// use soft_sphere::prelude::LinearSpringDashpot;
     /// let law = LinearSpringDashpot::clamped_with_rebound(1000.0_f64, 0.5).unwrap();
     /// assert!(law.clamps_attraction());
     /// // The unclipped law with the same dashpot has a lower restitution.

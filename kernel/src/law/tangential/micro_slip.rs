@@ -102,7 +102,9 @@ impl<F: Float, const SPRINGS: usize> MicroSlipSprings<F, SPRINGS> {
 /// follow Hertz's pressure and sum to `mu |F_n|`, the normal dashpot included.
 ///
 /// ```
-/// use soft_sphere::{ContactLaw, Hertz, HertzImpact, Material, MicroSlip, MindlinParameters};
+/// use soft_sphere::prelude::{
+///     ContactLaw, Hertz, HertzImpact, Material, MicroSlip, MindlinParameters,
+/// };
 /// let steel = Material::new(2.08e11_f64, 0.3).unwrap();
 /// let largest = HertzImpact { speed: 5.0, effective_radius: 0.01 };
 /// let normal = Hertz::new(steel.modulus_against_rigid(), 1.0, largest).unwrap();
