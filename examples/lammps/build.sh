@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds LAMMPS from the distribution's own source package (MPI, GRANULAR, PLUGIN, shared
 # libraries) into a cache outside the clone, reused when present, then the soft-sphere plugin
-# against it and the Rust C ABI, in the clone's target directory. Prints, as its last two lines, lmp=PATH and plugin=PATH.
+# against it and the Rust C ABI, in the clone's target directory. Prints, as its last three
+# lines, lammps_source=PATH (the LAMMPS source tree), lmp=PATH and plugin=PATH.
 #
 # Usage: examples/lammps/build.sh [v3]   (cache: $SOFT_SPHERE_CACHE, default ~/.cache/soft-sphere)
 # With v3, the kernel is compiled for x86-64-v3 (AVX2, FMA) into its own target directory and
@@ -72,10 +73,13 @@ else
   link=(-D SOFT_SPHERE_BUILD_TREE=OFF -D CMAKE_PREFIX_PATH="$prefix")
 fi
 plugin_build="$root/target/lammps-plugin-build$suffix"
+# The source tree LAMMPS was built from (its headers, and its examples for check.sh).
+lammps_source="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/..")"
 cmake -S "$here" -B "$plugin_build" -D CMAKE_BUILD_TYPE=Release \
-  -D LAMMPS_SOURCE_DIR="$(realpath "$(grep -m1 '^lammps_SOURCE_DIR' "$lammps_build/CMakeCache.txt" | cut -d= -f2)/../src")" \
+  -D LAMMPS_SOURCE_DIR="$lammps_source/src" \
   -D LAMMPS_BINARY_DIR="$lammps_build" "${link[@]}" >&2
 cmake --build "$plugin_build" -j "$(nproc)" >&2
 
+echo "lammps_source=$lammps_source"
 echo "lmp=$lmp"
 echo "plugin=$plugin_build/softsphereplugin.so"

@@ -196,26 +196,28 @@ where
             // SAFETY: atom i's neighbours hold `count` entries.
             let neighbours = unsafe { std::slice::from_raw_parts(first, count) };
             let run = k..k + count;
-            for (&j, pair) in neighbours.iter().zip(&mut work.pairs[run.clone()]) {
+            // Each neighbour's index and state in one pass: the page is read once.
+            let pages = history.filter(|_| values > 0).map(|h| {
+                // SAFETY: checked present by `check_list`; `values` numbers per neighbour.
+                (unsafe { *h.first_value.add(i) }, h.values)
+            });
+            let places = work.pairs[run.clone()]
+                .iter_mut()
+                .zip(&mut work.states[run]);
+            for (jj, (&j, (pair, state))) in neighbours.iter().zip(places).enumerate() {
                 let j = j & list.index_mask;
                 if j < 0 || j as usize >= n {
                     report.atoms = [i as i64, i64::from(j)];
                     return SS_ERR_INDEX;
                 }
-                let j = j as usize;
                 *pair = [i as u32, j as u32];
-            }
-            if let (Some(h), true) = (history, values > 0) {
-                // SAFETY: checked present by `check_list`; `values` numbers per neighbour.
-                let at = unsafe { *h.first_value.add(i) };
-                for (jj, state) in work.states[run].iter_mut().enumerate() {
+                *state = match pages {
                     // SAFETY: as above.
-                    *state = Flat::read(unsafe {
-                        std::slice::from_raw_parts(at.add(jj * h.values), values)
-                    });
-                }
-            } else {
-                work.states[run].fill(Default::default());
+                    Some((at, stride)) => Flat::read(unsafe {
+                        std::slice::from_raw_parts(at.add(jj * stride), values)
+                    }),
+                    None => Default::default(),
+                };
             }
             k += count;
         }
@@ -287,12 +289,12 @@ where
                     let count = *list.neighbour_counts.add(i) as usize;
                     let touch = std::slice::from_raw_parts_mut(*h.first_touch.add(i), count);
                     let kept = if advance { &work.next } else { &work.states };
-                    for (flag, state) in touch.iter_mut().zip(&kept[k..k + count]) {
+                    let at = *h.first_value.add(i);
+                    // Each neighbour's flag and state in one pass: the state is read once.
+                    for (jj, (flag, state)) in touch.iter_mut().zip(&kept[k..k + count]).enumerate()
+                    {
                         *flag = i32::from(*state != Default::default());
-                    }
-                    if advance && values > 0 {
-                        let at = *h.first_value.add(i);
-                        for (jj, state) in work.next[k..k + count].iter().enumerate() {
+                        if advance && values > 0 {
                             state.write(std::slice::from_raw_parts_mut(
                                 at.add(jj * h.values),
                                 values,

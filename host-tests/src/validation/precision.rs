@@ -211,6 +211,12 @@ pub const TOLERANCES: &[Tolerance] = &[
         "0.151 measured: the curve (a DEM output) reverses where a stuck contact does not",
     ),
     bound(
+        "Chung & Ooi 6",
+        "RMS to the Al alloy curve at 16x LIGGGHTS' dashpot against the overdamped limit's",
+        chung_ooi::OVERDAMPED_TOLERANCE,
+        Absolute,
+    ),
+    bound(
         "micro-slip cycles",
         "loop energy against Mindlin & Deresiewicz, every `tau`, breakpoint count and contact size",
         micro_slip::LOOP_ENERGY_TOLERANCE,
