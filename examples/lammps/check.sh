@@ -912,7 +912,7 @@ PY
   native_log="$(cd "$work" && "$lmp" -in in.pour -log none 2>&1)"
   plugin_log="$(cd "$work" && "$lmp" -in in.pour.plugin -var plugin "$plugin" -log none 2>&1)"
   plugin_status=$?
-  ends() { printf '%s\n' "$1" | awk '/^ *Step/ {on = 1; next} /^Loop time/ {on = 0; print last} on && NF >= 5 {last = $2 " " $3}'; }
+  ends() { printf '%s\n' "$1" | awk '/^ *Step/ {on = 1; next} /^Loop time/ {on = 0; print last} on && NF >= 5 && $1 ~ /^[0-9]+$/ {last = $2 " " $3}'; }
   ok=1
   if [ "$made" -eq 0 ] && [ "$changed" -eq 0 ] && [ "$plugin_status" -eq 0 ] && python3 - "$(ends "$native_log")" "$(ends "$plugin_log")" <<'PY'; then ok=0; fi
 import sys
