@@ -186,7 +186,7 @@ pub const TOLERANCES: &[Tolerance] = &[
     ),
     departure(
         "Chung & Ooi 6, 8",
-        "gross sliding against rigid-body theory, `e` = 0.5",
+        "gross sliding against rigid-body theory, `e` = 0.5; Test 6 at 16x LIGGGHTS' dashpot against the overdamped limit",
         chung_ooi::DAMPED_SLIDING_TOLERANCE,
         Rms,
         "the Coulomb limit includes the normal dashpot",
@@ -209,12 +209,6 @@ pub const TOLERANCES: &[Tolerance] = &[
         chung_ooi::MICRO_SLIP_TEST6_TOLERANCE,
         Rms,
         "0.151 measured: the curve (a DEM output) reverses where a stuck contact does not",
-    ),
-    bound(
-        "Chung & Ooi 6",
-        "RMS to the Al alloy curve at 16x LIGGGHTS' dashpot against the overdamped limit's",
-        chung_ooi::OVERDAMPED_TOLERANCE,
-        Absolute,
     ),
     bound(
         "micro-slip cycles",
