@@ -293,7 +293,7 @@ where
                     // Each neighbour's flag and state in one pass: the state is read once.
                     for (jj, (flag, state)) in touch.iter_mut().zip(&kept[k..k + count]).enumerate()
                     {
-                        *flag = i32::from(*state != Default::default());
+                        *flag = i32::from(state.keeps());
                         if advance && values > 0 {
                             state.write(std::slice::from_raw_parts_mut(
                                 at.add(jj * h.values),

@@ -18,6 +18,21 @@ pub(crate) trait Flat<F: Float>: ContactState {
     fn write(&self, values: &mut [F]);
     /// The same contact's state seen from the other body (i and j swapped).
     fn mirrored(&self) -> Self;
+    /// Whether the state is kept, `!= Default::default()`. Touching and apart pairs come in no
+    /// order a processor can predict, so the states of a few numbers say it without a branch
+    /// ([`any_nonzero`]).
+    #[inline(always)]
+    fn keeps(&self) -> bool {
+        *self != Default::default()
+    }
+}
+
+/// Whether any of `values` is other than zero (`-0.0` is zero, NaN is not), without a branch
+/// per number: a sum of magnitudes is zero exactly when every one of them is, since adding a
+/// non-negative number never rounds below the larger of the two.
+#[inline(always)]
+pub(crate) fn any_nonzero<F: Float, const N: usize>(values: [F; N]) -> bool {
+    values.iter().fold(F::ZERO, |sum, v| sum + v.abs()) != F::ZERO
 }
 
 /// How a law's per-contact state sits in the caller's [`ss_state`] (the single-contact calls').
@@ -108,6 +123,11 @@ impl<F: Float> Flat<F> for SpringDisplacement<F> {
             displacement: -self.displacement,
         }
     }
+    #[inline(always)]
+    fn keeps(&self) -> bool {
+        let d = self.displacement;
+        any_nonzero([d.x, d.y, d.z])
+    }
 }
 
 impl<F: Float> Stored<F> for SpringDisplacement<F> {
@@ -144,6 +164,11 @@ impl<F: Float> Flat<F> for MindlinSpring<F> {
             force: -self.force,
             contact_radius: self.contact_radius,
         }
+    }
+    #[inline(always)]
+    fn keeps(&self) -> bool {
+        let f = self.force;
+        any_nonzero([f.x, f.y, f.z, self.contact_radius])
     }
 }
 
@@ -189,6 +214,11 @@ impl<F: Float, S: Flat<F>> Flat<F> for RollingSpring<S, F> {
             torque: -self.torque,
         }
     }
+    #[inline(always)]
+    fn keeps(&self) -> bool {
+        let t = self.torque;
+        self.tangential.keeps() | any_nonzero([t.x, t.y, t.z])
+    }
 }
 
 impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
@@ -201,5 +231,51 @@ impl<F: Float, S: Stored<F>> Stored<F> for RollingSpring<S, F> {
     }
     fn store(&self, state: &mut ss_state<F>) {
         self.tangential.store(state);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Numbers a stored state can hold: both zeros, the smallest subnormal, ordinary values of
+    /// both signs (two that cancel), the infinities and NaN.
+    const SPECIAL: [f64; 9] = [
+        0.0,
+        -0.0,
+        f64::from_bits(1),
+        1.0,
+        -1.0,
+        -2.5e-300,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+
+    /// `keeps` is `!= Default::default()` for every state of the stored-spring laws, over
+    /// every combination of the special numbers (two of them per state, the rest zero, in every
+    /// place).
+    #[test]
+    fn keeps_is_not_the_default_state() {
+        for (a, b) in SPECIAL
+            .iter()
+            .flat_map(|&a| SPECIAL.iter().map(move |&b| (a, b)))
+        {
+            for (p, q) in [(0, 1), (0, 2), (1, 2), (2, 3), (0, 3), (3, 5), (4, 5)] {
+                let mut v = [0.0; 6];
+                v[p] = a;
+                v[q] = b;
+                let spring = SpringDisplacement::<f64>::read(&v[..3]);
+                let mindlin = MindlinSpring::<f64>::read(&v[..4]);
+                let rolling = RollingSpring::<MindlinSpring<f64>, f64>::read(&{
+                    let mut w = [0.0; 7];
+                    w[1..].copy_from_slice(&v);
+                    w
+                });
+                assert_eq!(spring.keeps(), spring != Default::default(), "{v:?}");
+                assert_eq!(mindlin.keeps(), mindlin != Default::default(), "{v:?}");
+                assert_eq!(rolling.keeps(), rolling != Default::default(), "{v:?}");
+            }
+        }
     }
 }
