@@ -277,5 +277,13 @@ mod tests {
                 assert_eq!(rolling.keeps(), rolling != Default::default(), "{v:?}");
             }
         }
+        // The micro-slip profile, by the comparison itself: relaxed, and with one number set.
+        type Profile = MicroSlipSprings<f64, 4>;
+        assert!(!Profile::default().keeps());
+        for place in 0..Profile::VALUES {
+            let mut v = [0.0; Profile::VALUES];
+            v[place] = 1.0;
+            assert!(Profile::read(&v).keeps(), "{place}");
+        }
     }
 }
