@@ -1,8 +1,9 @@
 //! The list seam takes the long-latency part of its contacts ahead of them, a chunk at a time:
 //! each separation's `1 / d` and overlap, and each stored spring's turn into the current
 //! tangent plane (its division and root). Whatever the tangential and rolling slots, a packing
-//! whose contacts roll, slide and cross a periodic side gives, step after step, the bits of the
-//! one-contact path called pair by pair with the loads summed in list order.
+//! of spheres of slightly different radii whose contacts roll, slide and cross a periodic side
+//! gives, step after step, the bits of the one-contact path called pair by pair with the loads
+//! summed in list order.
 
 use host_tests::random::Xorshift;
 use host_tests::seam::evaluate_swapping;
@@ -44,7 +45,7 @@ impl<F: Float + From<f32>> Packing<F> {
             position: Vec::new(),
             velocity: Vec::new(),
             angular_velocity: Vec::new(),
-            radius: vec![f(RADIUS); count],
+            radius: Vec::new(),
             mass: vec![mass; count],
             material: vec![0; count],
             pairs: Vec::new(),
@@ -58,6 +59,8 @@ impl<F: Float + From<f32>> Packing<F> {
                 at(y) + r(2.0e-6),
                 at(z) + r(2.0e-6),
             ));
+            // Radii 0.1 % apart: every pair has its own effective radius.
+            p.radius.push(f(RADIUS) * (F::ONE + r(1.0e-3)));
             p.velocity.push(Vec3::new(r(0.02), r(0.02), r(0.02)));
             p.angular_velocity
                 .push(Vec3::new(r(60.0), r(60.0), r(60.0)));
@@ -254,4 +257,15 @@ fn mindlin_springs_turned_ahead_give_the_one_contact_bits() {
     );
     let std = ContactLaw::new(hertz, MindlinAA(t)).with_backend::<Std>();
     check("Mindlin AA, Std", std, true);
+    let impact = HertzImpact {
+        speed: 0.5_f32,
+        effective_radius: RADIUS as f32 / 2.0,
+    };
+    let hertz = Hertz::new(1.0e8, 0.8, impact).unwrap();
+    let t = MindlinParameters::new(4.0e7, 0.5, 0.3).unwrap();
+    check(
+        "Mindlin AA, f32",
+        ContactLaw::new(hertz, MindlinAA(t)),
+        true,
+    );
 }

@@ -694,6 +694,28 @@ fn every_bad_input_is_refused_with_its_place_and_changes_nothing() {
             Err(ListError::Sphere { sphere: 11, error })
         );
     }
+    // Two invalid spheres: the first named. Finite numbers whose sum overflows are valid.
+    let (mut velocity, mut radius) = (m.velocity.clone(), m.radius.clone());
+    velocity[13].y = f64::NEG_INFINITY;
+    radius[5] = -0.0;
+    let arrays = SphereArrays {
+        velocity: &velocity,
+        radius: &radius,
+        ..m.arrays()
+    };
+    let error = ContactError::NonPositiveRadius;
+    assert_eq!(
+        t.coarse_time_step(1.0e-6, &arrays, &walls).map(|_| ()),
+        Err(ListError::Sphere { sphere: 5, error })
+    );
+    let velocity: Vec<_> = (0..m.velocity.len())
+        .map(|k| Vec3::new(f64::MAX, -f64::MAX, f64::MAX) * if k % 2 == 0 { 1.0 } else { 0.5 })
+        .collect();
+    let huge = SphereArrays {
+        velocity: &velocity,
+        ..m.arrays()
+    };
+    assert!(t.coarse_time_step(1.0e-6, &huge, &walls).is_ok());
     // A pair naming a sphere past the arrays.
     let mut pairs = m.pairs.clone();
     pairs[3] = [2, 20];

@@ -634,6 +634,32 @@ pub(crate) unsafe fn check_neighbours(
 /// # Safety
 /// `loads.force` and `loads.torque` hold three numbers for each of `count` atoms.
 unsafe fn first_unfinite_load<F: Real>(loads: &ss_loads<F>, count: usize) -> Option<usize> {
+    if count == 0 {
+        return None;
+    }
+    // SAFETY: the caller's promise.
+    let (force, torque) = unsafe {
+        (
+            std::slice::from_raw_parts(loads.force, 3 * count),
+            std::slice::from_raw_parts(loads.torque, 3 * count),
+        )
+    };
+    // Finite loads, the rule, cost one sum in independent lanes: a NaN or an infinity stays in
+    // it. Only a sum that is not finite (or finite loads that overflow it) is looked into.
+    let mut lanes = [F::ZERO; 4];
+    for (f, t) in force.chunks_exact(4).zip(torque.chunks_exact(4)) {
+        for (lane, (&f, &t)) in lanes.iter_mut().zip(f.iter().zip(t)) {
+            *lane += f + t;
+        }
+    }
+    let tail = force.len() / 4 * 4;
+    let rest = force[tail..].iter().zip(&torque[tail..]);
+    let sum = rest.fold(lanes.iter().fold(F::ZERO, |s, &l| s + l), |s, (&f, &t)| {
+        s + (f + t)
+    });
+    if sum.is_finite() {
+        return None;
+    }
     (0..count).find(|&k| {
         (3 * k..3 * k + 3).any(|at| {
             // SAFETY: the caller's promise.

@@ -708,6 +708,42 @@ fn bad_atoms_and_indices_name_the_atoms() {
             }
         }
     }
+    // At every place of the loads, each kind of bad number, and a pair that cancels in a sum
+    // (an infinity and its negative): the first atom that receives loads named (all 60 with
+    // Newton's third law, the 45 owned without). Finite loads whose sum overflows are not
+    // refused.
+    for (newton, receivers) in [(1, 60), (0, 45)] {
+        for at in 0..3 * 60 {
+            for (first, second) in [
+                (f64::NAN, 0.0),
+                (f64::NEG_INFINITY, 0.0),
+                (f64::INFINITY, f64::NEG_INFINITY),
+            ] {
+                let mut host = Host::new(9, 4);
+                let places = [at, 3 * 60 - 1 - at, (at + 7) % (3 * 60)];
+                host.force[places[0]] = first;
+                host.torque[places[1]] = second;
+                host.torque[places[2]] = second;
+                let bad = if second == 0.0 {
+                    &places[..1]
+                } else {
+                    &places[..]
+                };
+                let named = bad.iter().map(|&p| p / 3).filter(|&k| k < receivers).min();
+                let (code, report) = host.evaluate(table, newton, 1, |_, _, _| {});
+                match named {
+                    Some(k) => assert_eq!(
+                        (code, report.atoms),
+                        (SS_ERR_NON_FINITE_INPUT, [k as i64, -1])
+                    ),
+                    None => assert_eq!(code, SS_OK),
+                }
+            }
+        }
+    }
+    let mut host = Host::new(9, 4);
+    host.force.iter_mut().step_by(2).for_each(|f| *f = f64::MAX);
+    assert_eq!(host.evaluate(table, 1, 1, |_, _, _| {}).0, SS_OK);
     let mut host = Host::new(9, 4);
     host.mass[50] = 0.0;
     let (code, report) = host.evaluate(table, 1, 1, |_, _, _| {});

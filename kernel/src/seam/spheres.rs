@@ -53,6 +53,68 @@ pub trait Spheres<F: Float>: sealed::Sealed + Sync {
     /// # Errors
     /// [`ListError::Sphere`] when the sphere is not valid.
     fn check(&self, k: usize) -> Result<(), ListError>;
+
+    /// True only when every sphere passes [`Spheres::check`] and names a material below
+    /// `materials`, answered by reductions over whole arrays with no branch per sphere. False
+    /// says neither which sphere fails nor that one does (finite numbers whose sum overflows
+    /// give false too): the caller then checks them one by one, to name the first.
+    #[doc(hidden)]
+    fn all_valid(&self, materials: usize) -> bool;
+}
+
+/// Independent sums a reduction keeps: the processor overlaps their additions and the compiler
+/// widens them.
+const LANES: usize = 4;
+
+/// Whether the sum of every component of every vector is finite: false when one of them is not
+/// (a NaN or an infinity stays in any sum), and for finite ones whose sum overflows (the caller
+/// then checks them one by one and finds nothing).
+#[inline(always)]
+fn sum_is_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
+    let mut lanes = [Vec3::ZERO; LANES];
+    let chunks = vectors.chunks_exact(LANES);
+    for &v in chunks.remainder() {
+        lanes[0] += v;
+    }
+    for chunk in chunks {
+        for (lane, &v) in lanes.iter_mut().zip(chunk) {
+            *lane += v;
+        }
+    }
+    let sum = lanes.iter().fold(Vec3::ZERO, |sum, &lane| sum + lane);
+    (sum.x + sum.y + sum.z).is_finite()
+}
+
+/// Whether the values' sum is finite (as [`sum_is_finite`]) and none is at or below zero,
+/// counted without a branch per value.
+#[inline(always)]
+fn positive_with_finite_sum<F: Float>(values: &[F]) -> bool {
+    let mut lanes = [F::ZERO; LANES];
+    let chunks = values.chunks_exact(LANES);
+    for &x in chunks.remainder() {
+        lanes[0] += x;
+    }
+    for chunk in chunks {
+        for (lane, &x) in lanes.iter_mut().zip(chunk) {
+            *lane += x;
+        }
+    }
+    let finite = lanes
+        .iter()
+        .fold(F::ZERO, |sum, &lane| sum + lane)
+        .is_finite();
+    let not_positive = values
+        .iter()
+        .map(|&x| usize::from(x <= F::ZERO))
+        .sum::<usize>();
+    finite & (not_positive == 0)
+}
+
+/// Whether every material id is below `materials`, counted without a branch per id.
+#[inline(always)]
+fn all_below(material: &[u32], materials: usize) -> bool {
+    let beyond = |m: u32| usize::from(m as usize >= materials);
+    material.iter().map(|&m| beyond(m)).sum::<usize>() == 0
 }
 
 /// The engine's spheres, as its own arrays: sphere `k` is entry `k` of each. Every array must
@@ -160,6 +222,15 @@ impl<F: Float> Spheres<F> for SphereArrays<'_, F> {
     fn check(&self, k: usize) -> Result<(), ListError> {
         checked::check(&self.sphere(k)).map_err(|error| ListError::Sphere { sphere: k, error })
     }
+
+    fn all_valid(&self, materials: usize) -> bool {
+        all_below(self.material, materials)
+            & sum_is_finite(self.position)
+            & sum_is_finite(self.velocity)
+            & sum_is_finite(self.angular_velocity)
+            & positive_with_finite_sum(self.radius)
+            & positive_with_finite_sum(self.mass)
+    }
 }
 
 impl<F: Float> Spheres<F> for SphereSlice<'_, F> {
@@ -199,5 +270,94 @@ impl<F: Float> Spheres<F> for SphereSlice<'_, F> {
     #[inline(always)]
     fn check(&self, _: usize) -> Result<(), ListError> {
         Ok(())
+    }
+
+    fn all_valid(&self, materials: usize) -> bool {
+        all_below(self.material, materials)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{SphereArrays, Spheres};
+    use crate::value::vector::Vec3;
+
+    /// Seven spheres: one full set of lanes and a remainder.
+    const N: usize = 7;
+
+    struct Fields {
+        position: [Vec3<f64>; N],
+        velocity: [Vec3<f64>; N],
+        spin: [Vec3<f64>; N],
+        radius: [f64; N],
+        mass: [f64; N],
+        material: [u32; N],
+    }
+
+    impl Fields {
+        /// Valid spheres, the smallest positive mass among them.
+        fn valid() -> Self {
+            Self {
+                position: [Vec3::new(1.0e3, -2.0, 0.0); N],
+                velocity: [Vec3::new(-5.0, 0.0, 3.0e-300); N],
+                spin: [Vec3::new(1.0, -2.0, -0.0); N],
+                radius: [1.0e-3; N],
+                mass: [f64::MIN_POSITIVE * f64::EPSILON; N],
+                material: [1; N],
+            }
+        }
+
+        fn all_valid(&self, materials: usize) -> bool {
+            let arrays = SphereArrays {
+                position: &self.position,
+                velocity: &self.velocity,
+                angular_velocity: &self.spin,
+                radius: &self.radius,
+                mass: &self.mass,
+                material: &self.material,
+            };
+            arrays.all_valid(materials)
+        }
+    }
+
+    #[test]
+    fn every_invalid_field_of_every_sphere_is_noticed() {
+        assert!(Fields::valid().all_valid(2));
+        let unfinite = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        let not_positive = [0.0, -0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        for k in 0..N {
+            for c in 0..3 {
+                for bad in unfinite {
+                    let component = |v: &mut Vec3<f64>| match c {
+                        0 => v.x = bad,
+                        1 => v.y = bad,
+                        _ => v.z = bad,
+                    };
+                    for field in 0..3 {
+                        let mut f = Fields::valid();
+                        let vectors = match field {
+                            0 => &mut f.position,
+                            1 => &mut f.velocity,
+                            _ => &mut f.spin,
+                        };
+                        component(&mut vectors[k]);
+                        assert!(!f.all_valid(2), "sphere {k}, vector {field}, {c}: {bad}");
+                    }
+                }
+            }
+            for bad in not_positive {
+                let mut f = Fields::valid();
+                f.radius[k] = bad;
+                assert!(!f.all_valid(2), "sphere {k}, radius {bad}");
+                let mut f = Fields::valid();
+                f.mass[k] = bad;
+                assert!(!f.all_valid(2), "sphere {k}, mass {bad}");
+            }
+            for (material, materials) in [(2, 2), (u32::MAX, 2), (1, 1), (1, 0)] {
+                let mut f = Fields::valid();
+                f.material[k] = material;
+                assert!(!f.all_valid(materials), "sphere {k}, material {material}");
+            }
+        }
     }
 }
