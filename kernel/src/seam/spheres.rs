@@ -7,6 +7,7 @@ use crate::value::body::Sphere;
 use crate::value::checked::{self, CheckedSphere};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
+use core::ops::Add;
 
 pub(crate) mod sealed {
     /// Only the kernel's two layouts are [`Spheres`](super::Spheres).
@@ -66,22 +67,29 @@ pub trait Spheres<F: Float>: sealed::Sealed + Sync {
 /// widens them.
 const LANES: usize = 4;
 
-/// Whether the sum of every component of every vector is finite: false when one of them is not
-/// (a NaN or an infinity stays in any sum), and for finite ones whose sum overflows (the caller
-/// then checks them one by one and finds nothing).
+/// The sum of `items`, in [`LANES`] independent sums added at the end (an order of its own: a
+/// NaN or an infinity among them stays in it all the same).
 #[inline(always)]
-fn sum_is_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
-    let mut lanes = [Vec3::ZERO; LANES];
-    let chunks = vectors.chunks_exact(LANES);
-    for &v in chunks.remainder() {
-        lanes[0] += v;
+fn sum_in_lanes<T: Copy + Add<Output = T>>(items: &[T], zero: T) -> T {
+    let mut lanes = [zero; LANES];
+    let chunks = items.chunks_exact(LANES);
+    for &x in chunks.remainder() {
+        lanes[0] = lanes[0] + x;
     }
     for chunk in chunks {
-        for (lane, &v) in lanes.iter_mut().zip(chunk) {
-            *lane += v;
+        for (lane, &x) in lanes.iter_mut().zip(chunk) {
+            *lane = *lane + x;
         }
     }
-    let sum = lanes.iter().fold(Vec3::ZERO, |sum, &lane| sum + lane);
+    lanes.iter().fold(zero, |sum, &lane| sum + lane)
+}
+
+/// Whether the sum of every component of every vector is finite: false when one of them is not,
+/// and for finite ones whose sum overflows (the caller then checks them one by one and finds
+/// nothing).
+#[inline(always)]
+fn sum_is_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
+    let sum = sum_in_lanes(vectors, Vec3::ZERO);
     (sum.x + sum.y + sum.z).is_finite()
 }
 
@@ -89,25 +97,9 @@ fn sum_is_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
 /// counted without a branch per value.
 #[inline(always)]
 fn positive_with_finite_sum<F: Float>(values: &[F]) -> bool {
-    let mut lanes = [F::ZERO; LANES];
-    let chunks = values.chunks_exact(LANES);
-    for &x in chunks.remainder() {
-        lanes[0] += x;
-    }
-    for chunk in chunks {
-        for (lane, &x) in lanes.iter_mut().zip(chunk) {
-            *lane += x;
-        }
-    }
-    let finite = lanes
-        .iter()
-        .fold(F::ZERO, |sum, &lane| sum + lane)
-        .is_finite();
-    let not_positive = values
-        .iter()
-        .map(|&x| usize::from(x <= F::ZERO))
-        .sum::<usize>();
-    finite & (not_positive == 0)
+    let finite = sum_in_lanes(values, F::ZERO).is_finite();
+    let not_positive = values.iter().map(|&x| usize::from(x <= F::ZERO));
+    finite & (not_positive.sum::<usize>() == 0)
 }
 
 /// Whether every material id is below `materials`, counted without a branch per id.
