@@ -644,29 +644,28 @@ unsafe fn first_unfinite_load<F: Real>(loads: &ss_loads<F>, count: usize) -> Opt
             std::slice::from_raw_parts(loads.torque, 3 * count),
         )
     };
-    // Finite loads, the rule, cost one sum in independent lanes: a NaN or an infinity stays in
-    // it. Only a sum that is not finite (or finite loads that overflow it) is looked into.
+    if sum_is_finite(force, torque) {
+        return None;
+    }
+    let finite = |at: usize| force[at].is_finite() && torque[at].is_finite();
+    (0..count).find(|&k| !(3 * k..3 * k + 3).all(finite))
+}
+
+/// Whether the sum of every force and torque is finite, in independent lanes: false when one of
+/// them is not (a NaN or an infinity stays in any sum), and for finite ones whose sum overflows
+/// (the caller then looks at them one by one and finds nothing). Finite loads, the rule, cost
+/// this sum rather than a test and a branch per number.
+fn sum_is_finite<F: Real>(force: &[F], torque: &[F]) -> bool {
+    let (forces, torques) = (force.chunks_exact(4), torque.chunks_exact(4));
+    let rest = forces.remainder().iter().zip(torques.remainder());
     let mut lanes = [F::ZERO; 4];
-    for (f, t) in force.chunks_exact(4).zip(torque.chunks_exact(4)) {
+    for (f, t) in forces.zip(torques) {
         for (lane, (&f, &t)) in lanes.iter_mut().zip(f.iter().zip(t)) {
             *lane += f + t;
         }
     }
-    let tail = force.len() / 4 * 4;
-    let rest = force[tail..].iter().zip(&torque[tail..]);
-    let sum = rest.fold(lanes.iter().fold(F::ZERO, |s, &l| s + l), |s, (&f, &t)| {
-        s + (f + t)
-    });
-    if sum.is_finite() {
-        return None;
-    }
-    (0..count).find(|&k| {
-        (3 * k..3 * k + 3).any(|at| {
-            // SAFETY: the caller's promise.
-            let (force, torque) = unsafe { (*loads.force.add(at), *loads.torque.add(at)) };
-            !(force.is_finite() && torque.is_finite())
-        })
-    })
+    let lanes = lanes.iter().fold(F::ZERO, |sum, &lane| sum + lane);
+    rest.fold(lanes, |sum, (&f, &t)| sum + (f + t)).is_finite()
 }
 
 pub(crate) fn list_code(error: ListError, pairs: &[[u32; 2]], report: &mut ss_list_report) -> i32 {
