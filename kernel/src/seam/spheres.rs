@@ -6,8 +6,7 @@ use crate::seam::list_error::{ListArray, ListError};
 use crate::value::body::Sphere;
 use crate::value::checked::{self, CheckedSphere};
 use crate::value::float::Float;
-use crate::value::vector::Vec3;
-use core::ops::Add;
+use crate::value::vector::{Vec3, all_finite};
 
 pub(crate) mod sealed {
     /// Only the kernel's two layouts are [`Spheres`](super::Spheres).
@@ -55,51 +54,19 @@ pub trait Spheres<F: Float>: sealed::Sealed + Sync {
     /// [`ListError::Sphere`] when the sphere is not valid.
     fn check(&self, k: usize) -> Result<(), ListError>;
 
-    /// True only when every sphere passes [`Spheres::check`] and names a material below
-    /// `materials`, answered by reductions over whole arrays with no branch per sphere. False
-    /// says neither which sphere fails nor that one does (finite numbers whose sum overflows
-    /// give false too): the caller then checks them one by one, to name the first.
+    /// Whether every sphere passes [`Spheres::check`] and names a material below `materials`,
+    /// answered by reductions over whole arrays with no branch per sphere. False does not say
+    /// which sphere fails: the caller then checks them one by one, to name the first.
     #[doc(hidden)]
     fn all_valid(&self, materials: usize) -> bool;
 }
 
-/// Independent sums a reduction keeps: the processor overlaps their additions and the compiler
-/// widens them.
-const LANES: usize = 4;
-
-/// The sum of `items`, in [`LANES`] independent sums added at the end (an order of its own: a
-/// NaN or an infinity among them stays in it all the same).
+/// Whether every value is positive and finite, counted without a branch per value: a value at
+/// or below zero, or one whose `x * 0` is not zero (an infinity or a NaN), counts.
 #[inline(always)]
-fn sum_in_lanes<T: Copy + Add<Output = T>>(items: &[T], zero: T) -> T {
-    let mut lanes = [zero; LANES];
-    let chunks = items.chunks_exact(LANES);
-    for &x in chunks.remainder() {
-        lanes[0] = lanes[0] + x;
-    }
-    for chunk in chunks {
-        for (lane, &x) in lanes.iter_mut().zip(chunk) {
-            *lane = *lane + x;
-        }
-    }
-    lanes.iter().fold(zero, |sum, &lane| sum + lane)
-}
-
-/// Whether the sum of every component of every vector is finite: false when one of them is not,
-/// and for finite ones whose sum overflows (the caller then checks them one by one and finds
-/// nothing).
-#[inline(always)]
-fn sum_is_finite<F: Float>(vectors: &[Vec3<F>]) -> bool {
-    let sum = sum_in_lanes(vectors, Vec3::ZERO);
-    (sum.x + sum.y + sum.z).is_finite()
-}
-
-/// Whether the values' sum is finite (as [`sum_is_finite`]) and none is at or below zero,
-/// counted without a branch per value.
-#[inline(always)]
-fn positive_with_finite_sum<F: Float>(values: &[F]) -> bool {
-    let finite = sum_in_lanes(values, F::ZERO).is_finite();
-    let not_positive = values.iter().map(|&x| usize::from(x <= F::ZERO));
-    finite & (not_positive.sum::<usize>() == 0)
+fn all_positive<F: Float>(values: &[F]) -> bool {
+    let outside = |x: F| usize::from((x <= F::ZERO) | (x * F::ZERO != F::ZERO));
+    values.iter().map(|&x| outside(x)).sum::<usize>() == 0
 }
 
 /// Whether every material id is below `materials`, counted without a branch per id.
@@ -217,11 +184,11 @@ impl<F: Float> Spheres<F> for SphereArrays<'_, F> {
 
     fn all_valid(&self, materials: usize) -> bool {
         all_below(self.material, materials)
-            & sum_is_finite(self.position)
-            & sum_is_finite(self.velocity)
-            & sum_is_finite(self.angular_velocity)
-            & positive_with_finite_sum(self.radius)
-            & positive_with_finite_sum(self.mass)
+            & all_finite(self.position)
+            & all_finite(self.velocity)
+            & all_finite(self.angular_velocity)
+            & all_positive(self.radius)
+            & all_positive(self.mass)
     }
 }
 
