@@ -203,6 +203,9 @@ struct Profile<F, const SPRINGS: usize> {
     slipping: [bool; SPRINGS],
     used: usize,
     last: Breakpoint<F>,
+    /// What the drops so far have added to the integral of `|u|^2` over `t` (negative: taken
+    /// away).
+    dropped_energy: F,
 }
 
 impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
@@ -215,6 +218,7 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
             slipping: [false; SPRINGS],
             used: 0,
             last: centre,
+            dropped_energy: F::ZERO,
         }
     }
 
@@ -249,6 +253,32 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
     fn finish(&mut self) {
         if !self.last_on_line(Vec3::ZERO) {
             self.keep_last(F::ONE, Vec3::ZERO);
+        }
+    }
+
+    /// A drop replaces a breakpoint by the line through its neighbours, which lies above the
+    /// springs it stands for where the profile bends up (a contact growing under a slowing
+    /// push): that would store energy no motion put in. When the drops of a step added to what
+    /// the springs hold, the whole profile is scaled down to hold what it would have held
+    /// without them. Scaling down keeps every spring within its limit and the profile's shape.
+    #[inline(always)]
+    fn give_back_dropped_energy<M: MathBackend<F>>(&mut self) {
+        if self.dropped_energy <= F::ZERO {
+            return;
+        }
+        let held = square_integral(&self.positions, &self.displacements, self.used);
+        let ratio = if held > F::ZERO {
+            (held - self.dropped_energy) / held
+        } else {
+            F::ZERO
+        };
+        let scale = if ratio > F::ZERO {
+            M::sqrt(ratio)
+        } else {
+            F::ZERO
+        };
+        for u in &mut self.displacements[..self.used] {
+            *u = *u * scale;
         }
     }
 
@@ -289,6 +319,7 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
         };
         let mut least = F::INFINITY;
         let mut drop = SPRINGS;
+        let mut merged = F::ZERO;
         for k in 1..=SPRINGS {
             let ((a, left), (b, point), (c, right)) = (at(k - 1), at(k), at(k + 1));
             let span = (c - a) * (c + a);
@@ -302,8 +333,12 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
             if change < least {
                 least = change;
                 drop = k;
+                merged = segment_square(a, left, c, right)
+                    - segment_square(a, left, b, point)
+                    - segment_square(b, point, c, right);
             }
         }
+        self.dropped_energy += merged;
         if drop < SPRINGS {
             for k in drop..SPRINGS - 1 {
                 self.positions[k] = self.positions[k + 1];
@@ -480,6 +515,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
             previous = next;
         }
         profile.finish();
+        profile.give_back_dropped_energy::<M>();
 
         let used = profile.used;
         let mut mean = Vec3::ZERO;
@@ -519,20 +555,7 @@ impl<F: Float, const SPRINGS: usize> TangentialModel<F> for MicroSlip<F, SPRINGS
         if state.contact_radius <= F::ZERO || !state.contact_radius.is_finite() {
             return F::ZERO;
         }
-        let used = state.used();
-        let mut integral = F::ZERO;
-        for k in 0..used {
-            let (start, u) = (
-                if k == 0 { F::ZERO } else { state.positions[k] },
-                state.displacements[k],
-            );
-            let (end, v) = if k + 1 < used {
-                (state.positions[k + 1], state.displacements[k + 1])
-            } else {
-                (F::ONE, Vec3::ZERO)
-            };
-            integral += segment_square(start, u, end, v);
-        }
+        let integral = square_integral(&state.positions, &state.displacements, state.used());
         self.parameters.stiffness(state.contact_radius) * integral * F::HALF
     }
 
@@ -553,6 +576,22 @@ fn segment_mean<F: Float>(a: F, u: Vec3<F>, b: F, v: Vec3<F>) -> Vec3<F> {
     let three = F::from_f64(3.0);
     let weight = (three * a + h) / (three * (a + b));
     (u + (v - u) * weight) * h
+}
+
+/// The integral of `|u|^2` over `0 <= t <= 1` for the first `used` breakpoints of a profile (the
+/// first at the centre, whatever its stored position; the rim after the last).
+fn square_integral<F: Float>(positions: &[F], displacements: &[Vec3<F>], used: usize) -> F {
+    let mut integral = F::ZERO;
+    for k in 0..used {
+        let start = if k == 0 { F::ZERO } else { positions[k] };
+        let (end, v) = if k + 1 < used {
+            (positions[k + 1], displacements[k + 1])
+        } else {
+            (F::ONE, Vec3::ZERO)
+        };
+        integral += segment_square(start, displacements[k], end, v);
+    }
+    integral
 }
 
 /// The integral over `t` in `[a, b]` of `|w|^2`, `w` linear in `1 - t^2` from `u` to `v`.
