@@ -439,7 +439,7 @@ fn a_turning_path_stays_near_the_bed_it_stands_for() {
     // Along x the profile is exact; across and round, the springs of a slipping annulus turn
     // each by its own angle and the breakpoints follow them as far as they are allowed:
     // within 0.3 % of mu P at 16 breakpoints, 0.04 % at 32 (measured 0.17 % and 0.032 %), and
-    // a few percent when a handful must hold it all (measured 2.0 % at 4 and 8, 8.4 % at 3).
+    // a few percent when a handful must hold it all (measured 2.0 % at 4 and 8, 7.1 % at 3).
     let distances = [
         (3, distance_from_the_springs::<3>(), 0.1),
         (4, distance_from_the_springs::<4>(), 0.03),
