@@ -319,7 +319,6 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
         };
         let mut least = F::INFINITY;
         let mut drop = SPRINGS;
-        let mut merged = F::ZERO;
         for k in 1..=SPRINGS {
             let ((a, left), (b, point), (c, right)) = (at(k - 1), at(k), at(k + 1));
             let span = (c - a) * (c + a);
@@ -333,12 +332,12 @@ impl<F: Float, const SPRINGS: usize> Profile<F, SPRINGS> {
             if change < least {
                 least = change;
                 drop = k;
-                merged = segment_square(a, left, c, right)
-                    - segment_square(a, left, b, point)
-                    - segment_square(b, point, c, right);
             }
         }
-        self.dropped_energy += merged;
+        let ((a, left), (b, point), (c, right)) = (at(drop - 1), at(drop), at(drop + 1));
+        self.dropped_energy += segment_square(a, left, c, right)
+            - segment_square(a, left, b, point)
+            - segment_square(b, point, c, right);
         if drop < SPRINGS {
             for k in drop..SPRINGS - 1 {
                 self.positions[k] = self.positions[k + 1];
