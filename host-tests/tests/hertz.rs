@@ -507,25 +507,15 @@ fn a_spinning_sphere_landing_head_on_gains_no_energy_from_micro_slip() {
         },
     };
     for fraction in [1.0, 0.5] {
-        let at = |name, r: Result<(), TestCaseError>| {
-            assert!(r.is_ok(), "{name} at {fraction} of the step: {r:?}")
-        };
-        at(
-            "3",
+        let outcomes = [
             coulomb_and_energy_at::<f64, _>("3", MicroSlip::<f64, 3>::new, &c, fraction),
-        );
-        at(
-            "4",
             coulomb_and_energy_at::<f64, _>("4", MicroSlip::<f64, 4>::new, &c, fraction),
-        );
-        at(
-            "8",
             coulomb_and_energy_at::<f64, _>("8", MicroSlip::<f64, 8>::new, &c, fraction),
-        );
-        at(
-            "16",
             coulomb_and_energy_at::<f64, _>("16", MicroSlip::<f64, 16>::new, &c, fraction),
-        );
+        ];
+        for outcome in outcomes {
+            assert!(outcome.is_ok(), "at {fraction} of the step: {outcome:?}");
+        }
     }
 }
 
