@@ -678,6 +678,15 @@ print(f"  soft/sphere aa on 2 ranks: loop {two[1]:.2f} s, speed-up {median('aa',
 PY
 
 # 5. Bad input: LAMMPS stops with a clear ERROR naming the parameter, before any atom moves.
+stops() { # name, deck file (in $work), expected words of its first ERROR: the run stops there,
+  # with no NaN printed on the way
+  output="$(cd "$work" && "$lmp" -in "$2" -var plugin "$plugin" -log none 2>&1)"
+  status=$?
+  message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+  ok=1
+  if [ $status -ne 0 ] && grep -q "$3" <<< "$message" && ! grep -qiw nan <<< "$output"; then ok=0; fi
+  result "$1" "$ok" "${message:-no ERROR line (exit $status)}"
+}
 bad() { # name, pair_style arguments or fix, expected words, timestep
   cat > "$work/bad.in" <<BAD
 units si
@@ -694,12 +703,7 @@ fix integrate all nve/sphere
 timestep $4
 run 10
 BAD
-  output="$(cd "$work" && "$lmp" -in bad.in -var plugin "$plugin" -log none 2>&1)"
-  status=$?
-  message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
-  ok=1
-  if [ $status -ne 0 ] && grep -q "$3" <<< "$message" && ! grep -qi nan <<< "$output"; then ok=0; fi
-  result "bad input: $1" "$ok" "${message:-no ERROR line (exit $status)}"
+  stops "bad input: $1" bad.in "$3"
 }
 bad "negative stiffness" "soft/sphere aa -1000 0.9 285.7 0.5 0.5" "k_n (normal stiffness) must be positive" 1e-6
 bad "restitution above 1" "soft/sphere aa 1000 1.5 285.7 0.5 0.5" "e (restitution) must lie in \[0, 1\]" 1e-6
@@ -730,12 +734,7 @@ timestep 1e-6
 BAD
     printf '%s\n' "$@" "run 10"
   } > "$work/bad.in"
-  output="$(cd "$work" && "$lmp" -in bad.in -var plugin "$plugin" -log none 2>&1)"
-  status=$?
-  message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
-  ok=1
-  if [ $status -ne 0 ] && grep -q "$words" <<< "$message" && ! grep -qi nan <<< "$output"; then ok=0; fi
-  result "bad input: $name" "$ok" "${message:-no ERROR line (exit $status)}"
+  stops "bad input: $name" bad.in "$words"
 }
 bad_pairs "a type with no coefficients" "no coefficients for types 1 and 2" \
   "pair_style soft/sphere" "pair_coeff 1 1 aa 1000 0.9 285.7 0.5 0.5"
@@ -862,23 +861,71 @@ PY
     "exit $status, atoms, lowest and highest centre: ${row:-none} $(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
 done
 pour_deck 2e-4 > "$work/pour_long.in"
-output="$(cd "$work" && "$lmp" -in pour_long.in -var plugin "$plugin" -log none 2>&1)"
-status=$?
-message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
-ok=1
-if [ $status -ne 0 ] && grep -q 'soft/sphere: the time step 0.0002 s is at or past the kernel.s .* limit .* for types' <<< "$message"; then ok=0; fi
-result "a step too long for the atoms fix pour brings stops the run when they arrive" "$ok" "${message:-no ERROR line (exit $status)}"
+stops "a step too long for the atoms fix pour brings stops the run when they arrive" pour_long.in \
+  'soft/sphere: the time step 0.0002 s is at or past the kernel.s .* limit .* for types'
 # Atoms without radius and mass: an ERROR, not a crash.
 printf '%s\n' 'units si' 'atom_style atomic' 'region box block 0 0.01 0 0.01 0 0.01' \
   'create_box 1 box' 'create_atoms 1 single 0.005 0.005 0.005' 'mass 1 1e-6' \
   'plugin load ${plugin}' 'pair_style soft/sphere aa 1000 0.9 285.7 0.5 0.5' 'pair_coeff * *' \
   'fix integrate all nve' 'timestep 1e-6' 'run 10' > "$work/atomic.in"
-output="$(cd "$work" && "$lmp" -in atomic.in -var plugin "$plugin" -log none 2>&1)"
-status=$?
-message="$(printf '%s\n' "$output" | grep -m1 '^ERROR' || true)"
+stops "bad input: atom_style atomic" atomic.in 'soft/sphere requires the atom attributes radius, rmass'
+# pair_write calls single() for atoms 0 and 1 at distances of its own: an ERROR, not a crash,
+# with one atom (no atom 1) and with two (apart from where it asks).
+for n in 1 2; do
+  printf '%s\n' 'units si' 'atom_style sphere' 'boundary p p f' 'comm_modify vel yes' \
+    'region box block -0.01 0.01 -0.01 0.01 0 0.01' 'create_box 1 box' \
+    'create_atoms 1 single 0 0 0.002' "$( [ "$n" = 2 ] && echo 'create_atoms 1 single 0 0 0.004')" \
+    'set type 1 diameter 1e-3 density 2500' 'plugin load ${plugin}' \
+    'pair_style soft/sphere aa 1000 0.9 285.7 0.5 0.5' 'pair_coeff * *' \
+    'pair_write 1 1 5 r 0.0002 0.0009 pair_write.table SS' > "$work/pair_write_$n.in"
+  stops "bad input: pair_write with $n atom(s)" "pair_write_$n.in" \
+    'soft/sphere: single() answers for two atoms of a built neighbour list'
+done
+# A step that fix dt/reset lengthens within a run is checked again, by the pair style and by the
+# wall fix (each makes its laws again at the new step): a 1 mm sphere resting on a wall, or two
+# touching, and the step set to 1 ms after the first step, ten times their contact's duration
+# (pi sqrt(m*/k_n) = 0.11 and 0.08 ms). Each run stops with the stability ERROR.
+for who in wall pair; do
+  if [ "$who" = wall ]; then
+    atoms=('create_atoms 1 single 0 0 0.0005') lines=('pair_style zero 0.001' 'pair_coeff * *'
+      'fix wall all wall/soft/sphere aa 1000 0.9 285.7 0.5 0.5 zplane 0.0 NULL')
+    expected='fix wall/soft/sphere: the time step 0.001 s is at or past the kernel.s stability limit .* for the atoms and the wall'
+  else
+    atoms=('create_atoms 1 single 0 0 0.002' 'create_atoms 1 single 0 0 0.003')
+    lines=('pair_style soft/sphere aa 1000 0.9 285.7 0.5 0.5' 'pair_coeff * *')
+    expected='soft/sphere: the time step 0.001 s is at or past the kernel.s stability limit'
+  fi
+  printf '%s\n' 'units si' 'atom_style sphere' 'boundary p p f' 'comm_modify vel yes' \
+    'region box block -0.01 0.01 -0.01 0.01 0 0.01' 'create_box 1 box' "${atoms[@]}" \
+    'set type 1 diameter 1e-3 density 2500' 'plugin load ${plugin}' "${lines[@]}" \
+    'neighbor 0.0001 bin' 'fix integrate all nve/sphere' 'fix longer all dt/reset 1 NULL 1e-3 1e-4 units box' \
+    'timestep 2e-6' 'run 10' > "$work/dt_reset_$who.in"
+  stops "a step fix dt/reset lengthens past the limit stops the run ($who)" "dt_reset_$who.in" "$expected"
+done
+# The wall fix checks the step for the spheres against the wall alone: their pairs are the pair
+# style's (here pair_style zero). A sphere against a wall has m* = m, twice a pair's, so the
+# wall's accuracy limit is sqrt(2) times the pair style's for the same spheres. A step between
+# the two runs with the wall fix alone; past the wall's, it stops naming the atoms and the wall.
+limit_of() { # deck file: the accuracy limit its ERROR names
+  (cd "$work" && "$lmp" -in "$1" -var plugin "$plugin" -log none 2>&1) |
+    sed -n 's/^ERROR: .*accuracy limit \([0-9.e+-]*\) s for \(.*\) (their.*/\1 \2/p' | head -1
+}
+for dt in 9.5e-6 8e-6; do
+  for who in wall pair; do
+    sed "s/^timestep .*/timestep $dt/; /dt\/reset/d" "$work/dt_reset_$who.in" > "$work/step_${who}_$dt.in"
+  done
+done
+pair_limit="$(limit_of step_pair_9.5e-6.in)"
+wall_limit="$(limit_of step_wall_9.5e-6.in)"
+between="$(cd "$work" && "$lmp" -in step_wall_8e-6.in -var plugin "$plugin" -log none 2>&1)"
 ok=1
-if [ $status -ne 0 ] && grep -q 'soft/sphere requires the atom attributes radius, rmass' <<< "$message"; then ok=0; fi
-result "bad input: atom_style atomic" "$ok" "${message:-no ERROR line (exit $status)}"
+if [ "${pair_limit#* }" = "types 1 and 1" ] && [ "${wall_limit#* }" = "the atoms and the wall" ] &&
+  compare "${wall_limit%% *}" "$(python3 -c "print(2 ** 0.5 * ${pair_limit%% *})")" 1e-9 &&
+  python3 -c "import sys; sys.exit(0 if ${pair_limit%% *} < 8e-6 < ${wall_limit%% *} else 1)" &&
+  ! grep -q '^ERROR' <<< "$between" &&
+  grep -q '^Loop time' <<< "$between"; then ok=0; fi
+result "the wall fix checks the step for the spheres against the wall alone" "$ok" \
+  "accuracy limits: pair ${pair_limit:-none}, wall ${wall_limit:-none} (sqrt(2) times); 8e-6 s with the wall fix alone: $(grep -m1 -E '^ERROR|^Loop time' <<< "$between")"
 
 # LAMMPS's own pour example (examples/pour/in.pour of the source LAMMPS was built from: 3000
 # spheres poured by fix pour onto a fix wall/gran floor, then a chute flow), with only its pair

@@ -298,9 +298,11 @@ macro_rules! entry_points {
         /// The pairs of materials the table evaluates, `count` pairs of ids in `pairs` (`a, b`
         /// names both orders; replacing any given before; none: every pair, the default). The
         /// others are another pair style's (LAMMPS `pair_style hybrid`): each prepare checks
-        /// the step for the pairs named alone (and every material present against the walls),
-        /// a material in none of them needs no coefficients, and the entries refuse a pair of
-        /// the others (`SS_ERR_MATERIAL`, with its atoms in the report). Returns `SS_OK`,
+        /// the step for the pairs named alone (and every material present against the walls,
+        /// which then needs coefficients to meet them by), a material in none of them needs no
+        /// coefficients, and the entries refuse a pair of the others (`SS_ERR_MATERIAL`, with
+        /// its atoms in the report), as the walls entry refuses an atom of a material absent
+        /// at the prepare with no law against the walls' material. Returns `SS_OK`,
         /// `SS_ERR_NULL`, `SS_ERR_LENGTH` for a count past memory, or `SS_ERR_MATERIAL` for an
         /// id past the table (nothing changed). The table does not evaluate until prepared
         /// again.
@@ -377,7 +379,8 @@ macro_rules! entry_points {
         /// selected atoms only) and, when `advance` is not 0, the states advanced (an atom clear
         /// of every wall is not evaluated: its states are set to zero, as the kernel would). On any error
         /// nothing is written but `*report` (the atom it is about): `SS_ERR_NULL`,
-        /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL`, `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`,
+        /// `SS_ERR_LENGTH`, `SS_ERR_MATERIAL` (a material past the table, or with no law
+        /// against the walls', see `ss_table_set_pairs_*`), `SS_ERR_BAD_WALL`, `SS_ERR_NOT_PREPARED`,
         /// `SS_ERR_NON_FINITE_INPUT` for an owned atom whose force or torque in `*loads` is not
         /// finite, or a contact's code. One thread at a time per table.
         ///

@@ -378,7 +378,8 @@ where
         if values > 0 && walls.count > 0 && !present(walls.states, n) {
             return SS_ERR_NULL;
         }
-        if walls.material as usize >= self.materials {
+        let wall_material = walls.material as usize;
+        if wall_material >= self.materials {
             return SS_ERR_MATERIAL;
         }
         let work = &mut self.wall_work;
@@ -414,7 +415,7 @@ where
             }
             // SAFETY: one type per atom.
             let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
-            if t < 0 || t as usize >= self.materials {
+            if t < 0 || t as usize >= self.materials || self.unbuilt[t as usize][wall_material] {
                 report.atoms = [k as i64, -1];
                 return SS_ERR_MATERIAL;
             }

@@ -238,6 +238,10 @@ pub(crate) struct Tabled<F: Real, X: Mixing<F>> {
     /// others are another pair style's (LAMMPS `pair_style hybrid`): the step is not checked
     /// for them and the entries refuse them.
     pub(crate) evaluated: Option<Pairs>,
+    /// The pairs of materials the last prepare left without a law (another style's, with
+    /// nothing to mix from, and no material present to meet a wall by them): the walls entry
+    /// refuses them, as the list entry refuses the others' pairs.
+    pub(crate) unbuilt: Pairs,
     pub(crate) work: Workspace<F, <X::Law as Law>::State>,
     pub(crate) wall_work: WallWork<F, <X::Law as Law>::State>,
 }
@@ -443,6 +447,7 @@ where
             ready: None,
             walls: Vec::new(),
             evaluated: None,
+            unbuilt: [[false; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
             work: Workspace {
                 material: Vec::new(),
                 pairs: Vec::new(),
@@ -534,12 +539,20 @@ where
         report: &mut ss_table_report<F>,
     ) -> i32 {
         self.ready = None;
+        let mut unbuilt = [[false; SS_MATERIALS_MAX]; SS_MATERIALS_MAX];
         // The first pair the table evaluates (material 0 with itself, for a table of every
         // pair) seeds the table; another style's pairs keep that law, never evaluated.
         let materials = self.materials;
         let pairs = (0..materials).flat_map(|a| (a..materials).map(move |b| (a, b)));
+        // The walls meet every material present, whatever pairs the table evaluates: its law
+        // against a wall's material is built (and refused) as an evaluated pair's.
+        let wall = |m: usize| self.walls.iter().any(|&w| w as usize == m);
+        let meets = |m: usize| lightest.get(m).is_some_and(|&mass| mass > F::ZERO);
+        let built = |a: usize, b: usize| {
+            self.evaluates(a, b) || (wall(a) && meets(b)) || (wall(b) && meets(a))
+        };
         let (a0, b0) = (pairs.clone())
-            .find(|&(a, b)| self.evaluates(a, b))
+            .find(|&(a, b)| built(a, b))
             .unwrap_or((0, 0));
         let mut table = match self.law(a0, b0) {
             Ok(law) => MaterialTable::<X::Law, SS_MATERIALS_MAX>::uniform(law),
@@ -553,7 +566,11 @@ where
             report.materials = [a as i64, b as i64];
             let law = match self.law(a, b) {
                 Ok(law) => law,
-                Err(_) if !self.evaluates(a, b) => continue,
+                Err(_) if !built(a, b) => {
+                    unbuilt[a][b] = true;
+                    unbuilt[b][a] = true;
+                    continue;
+                }
                 Err((code, parameter)) => {
                     report.parameter = parameter;
                     return code;
@@ -563,6 +580,7 @@ where
                 return SS_ERR_MATERIAL;
             }
         }
+        self.unbuilt = unbuilt;
         // One sphere of each material present, of its lightest mass: the kernel checks the step
         // against every pair of them.
         if !lightest.iter().all(|m| m.is_finite()) {

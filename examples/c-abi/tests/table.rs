@@ -1091,6 +1091,105 @@ fn a_table_evaluates_only_the_pairs_it_is_given() {
     }
 }
 
+/// A table of some pairs still meets the walls with every material present: a material with
+/// no coefficients to meet a wall by is refused, naming it and the wall, rather than meeting
+/// it by another pair's law.
+#[test]
+fn a_material_present_meets_the_walls_by_its_own_law() {
+    let config = ss_table_config {
+        model: SS_MODEL_AA,
+        materials: 3,
+        ..Default::default()
+    };
+    let mut table = null_mut();
+    // SAFETY: valid pointers throughout.
+    unsafe {
+        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
+        for m in [0, 2] {
+            assert_eq!(
+                ss_table_set_f64(table, m, m, &material(m), null_mut()),
+                SS_OK
+            );
+        }
+        assert_eq!(ss_table_set_pairs_f64(table, [0, 0].as_ptr(), 1), SS_OK);
+        assert_eq!(ss_table_set_walls_f64(table, [2].as_ptr(), 1), SS_OK);
+    }
+    // Material 1 absent: its pairs are nobody's, and it needs no coefficients.
+    assert_eq!(prepare(table, [1e-5, 0.0, 0.0]).0, SS_OK);
+    // Present: it meets the wall of material 2, and has nothing to mix with it.
+    assert_eq!(
+        prepare(table, [1e-5, 1e-5, 0.0]),
+        (SS_ERR_MATERIAL, report_of([1, 2]))
+    );
+    // Absent at the prepare, an atom of material 1 (type 2) that comes to the walls is refused,
+    // named, nothing written; the others meet the floor.
+    assert_eq!(prepare(table, [1e-5, 0.0, 0.0]).0, SS_OK);
+    let mut host = Host::new(7, 1);
+    let n = host.radius.len();
+    let floor = [ss_wall {
+        point: ss_vec3 {
+            x: 0.0,
+            y: 0.0,
+            z: -0.9e-3,
+        },
+        direction: ss_vec3 {
+            x: 0.0,
+            y: 0.0,
+            z: 1.0,
+        },
+        ..ss_wall::default()
+    }];
+    let mut states = vec![0.0; 7 * n];
+    let every = vec![1; n];
+    let but_type_2: Vec<i32> = host.types.iter().map(|&t| i32::from(t != 2)).collect();
+    let atoms = ss_atoms {
+        count: n,
+        owned: host.owned,
+        position: host.position.as_ptr(),
+        velocity: host.velocity.as_ptr(),
+        angular_velocity: host.spin.as_ptr(),
+        radius: host.radius.as_ptr(),
+        mass: host.mass.as_ptr(),
+        types: host.types.as_ptr(),
+        first_type: 1,
+    };
+    let loads = ss_loads {
+        force: host.force.as_mut_ptr(),
+        torque: host.torque.as_mut_ptr(),
+        newton: 0,
+        pair_force: null_mut(),
+    };
+    let evaluate = |selected: &[i32], states: &mut [f64]| {
+        let walls = ss_walls {
+            count: 1,
+            walls: floor.as_ptr(),
+            material: 2,
+            states: states.as_mut_ptr(),
+            stride: 7,
+            wall_stride: 7,
+            selected: selected.as_ptr(),
+            bit: 1,
+        };
+        let mut report = ss_list_report::default();
+        // SAFETY: valid pointers, as long as they say.
+        let code =
+            unsafe { ss_table_evaluate_walls_f64(table, &atoms, &walls, &loads, 1, &mut report) };
+        (code, report.atoms)
+    };
+    let before = bits(&host.force);
+    assert_eq!(evaluate(&every, &mut states), (SS_ERR_MATERIAL, [1, -1]));
+    assert_eq!(states, vec![0.0; 7 * n]);
+    // SAFETY: the forces, `3 n` numbers.
+    assert_eq!(
+        bits(unsafe { std::slice::from_raw_parts(loads.force, 3 * n) }),
+        before
+    );
+    assert_eq!(evaluate(&but_type_2, &mut states).0, SS_OK);
+    assert!(states.iter().any(|&v| v != 0.0), "the floor must touch");
+    // SAFETY: from ss_table_new_f64.
+    unsafe { ss_table_free_f64(table) };
+}
+
 /// A report naming materials `materials` and no parameter.
 fn report_of(materials: [i64; 2]) -> ss_table_report<f64> {
     ss_table_report {

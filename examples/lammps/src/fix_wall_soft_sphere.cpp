@@ -221,8 +221,12 @@ ss_table_f64 *FixWallSoftSphere::new_table(double largest_radius, double inertia
                  SoftSphere::parameter_error(code));
     }
   }
+  // The table evaluates the spheres against the wall alone (the wall's material with itself
+  // names no pair of atoms): the spheres' pairs, and the step they need, are the pair style's.
   const uint32_t wall = (uint32_t) types;
-  if (ss_table_set_walls_f64(made, &wall, 1) != SS_OK) {
+  const uint32_t alone[2] = {wall, wall};
+  if (ss_table_set_walls_f64(made, &wall, 1) != SS_OK ||
+      ss_table_set_pairs_f64(made, alone, 1) != SS_OK) {
     ss_table_free_f64(made);
     error->all(FLERR, "{}: the kernel refused the wall's material", style);
   }
@@ -299,6 +303,15 @@ void FixWallSoftSphere::refresh(bool remake)
   if (code != SS_OK)
     error->all(FLERR, "{}: {} {}", style, SoftSphere::parameter_name(report.parameter, model, true),
                SoftSphere::parameter_error(code));
+}
+
+/* fix dt/reset changed the step within a run: the walls' laws are made again at the new step,
+ * which is checked as at a run's start. Collective, as fix dt/reset calls it on every rank. */
+void FixWallSoftSphere::reset_dt()
+{
+  if (table == nullptr) return;
+  checked_lightest.clear();
+  refresh(false);
 }
 
 void FixWallSoftSphere::setup(int)

@@ -34,6 +34,7 @@ class FixWallSoftSphere : public Fix {
   void init() override;
   void setup(int) override;
   void post_force(int) override;
+  void reset_dt() override;
   double memory_usage() override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;

@@ -446,6 +446,24 @@ double PairSoftSphere::single(int i, int j, int itype, int jtype, double rsq, do
 {
   for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
   fforce = 0.0;
+  // A contact is its atoms' motion and stored springs, not r alone: single() answers for two
+  // atoms of a built neighbour list (compute pair/local), never for pair_write's table.
+  const int all = atom->nlocal + atom->nghost;
+  const auto apart_sq = [this, i, j]() {
+    double sum = 0.0;
+    for (int c = 0; c < 3; c++) {
+      const double d = atom->x[i][c] - atom->x[j][c];
+      sum += d * d;
+    }
+    return sum;
+  };
+  if (i < 0 || j < 0 || i >= all || j >= all || list == nullptr || list->numneigh == nullptr ||
+      std::fabs(apart_sq() - rsq) > 1e-12 * rsq)
+    error->one(FLERR,
+               "{}: single() answers for two atoms of a built neighbour list at their own "
+               "distance (pair_write cannot tabulate a granular contact, which depends on the "
+               "atoms' motion)",
+               STYLE);
   const double radsum = atom->radius[i] + atom->radius[j];
   if (rsq >= radsum * radsum || table == nullptr) return 0.0;
 
