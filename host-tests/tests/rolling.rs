@@ -136,7 +136,12 @@ fn collide<Ro: RollingModel<f64>>(
             _ => prop_assert!(false, "one ordering touches, the other not"),
         }
     }
-    prop_assert!(parted, "the spheres are still touching");
+    // At e = 0 the normal mode is critically damped: the overlap decays without crossing zero
+    // (`v t exp(-w t)`), so a perfectly plastic pair may move on together, touching ever less.
+    prop_assert!(
+        parted || c.material.restitution == 0.0,
+        "the spheres are still touching"
+    );
     let gain = (kinetic(&i) + kinetic(&j)) / before - 1.0;
     prop_assert!(gain <= 1e-3, "kinetic energy grew by {gain:e}");
     Ok(())

@@ -676,6 +676,9 @@ pub const REFERENCE_RMS_GOAL: f64 = 0.10;
 
 /// Absolute tolerance on the RMS distance from rigid-body theory in gross sliding at `e = 1`.
 pub const ELASTIC_SLIDING_TOLERANCE: f64 = 1e-4;
+/// Test 7: spheres whose contact points move together exchange nothing: the tangential velocity
+/// left (m/s, absolute) and the spin kept (relative), to rounding.
+pub const NO_EXCHANGE_TOLERANCE: f64 = 1e-9;
 /// The same at `e = 0.5`, where the Coulomb limit includes the normal dashpot
 /// ([`TangentialParameters`]' note: 6.7 % more friction impulse than rigid-body theory).
 pub const DAMPED_SLIDING_TOLERANCE: f64 = 0.04;
@@ -1121,7 +1124,7 @@ pub fn oblique(mut progress: impl FnMut(&str)) -> CaseOutput {
                     ),
                     v,
                     0.0,
-                    1e-9,
+                    NO_EXCHANGE_TOLERANCE,
                 );
                 out.relative(
                     format!(
@@ -1131,7 +1134,7 @@ pub fn oblique(mut progress: impl FnMut(&str)) -> CaseOutput {
                     ),
                     w,
                     spin,
-                    1e-9,
+                    NO_EXCHANGE_TOLERANCE,
                 );
             }
         }

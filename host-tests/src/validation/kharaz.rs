@@ -57,12 +57,12 @@ pub const MFIX_DEM05: Setup = Setup {
 };
 
 impl Setup {
-    /// The settings as one line, for the CSV comment.
-    pub fn describe(&self, steps_per_contact: f64) -> String {
+    /// The settings as one line, for the CSV comment; `step` says the time step (`t_c/50`).
+    pub fn describe(&self, step: &str) -> String {
         format!(
             "d = {} m, density = {} kg/m3, |V| = {} m/s, k_n = {} N/m, k_t = {} N/m, e = {}, \
              mu = {}, eta_t/eta_n = {}, no gravity, no initial spin, sphere-wall, torque arm R, \
-             symplectic Euler, dt = t_c/{steps_per_contact}, f64",
+             symplectic Euler, dt = {step}, f64",
             2.0 * self.radius,
             self.density,
             self.speed,
@@ -304,7 +304,7 @@ pub fn talk_sweep(mut progress: impl FnMut(&str)) -> CaseOutput {
         rms_table.push(experiment_rms(model, &setup));
         out.tables.push((
             format!("kharaz_{}", model.name()),
-            table(&coarse, setup.describe(50.0)),
+            table(&coarse, setup.describe("t_c/50")),
         ));
     }
     out.tables.push(("kharaz_rms".into(), rms_table));
@@ -390,7 +390,7 @@ fn step_dependence(setup: &Setup) -> Table {
     ])
     .with_comment(format!(
         "tangential restitution against the step; {}",
-        setup.describe(f64::NAN)
+        setup.describe("t_c/steps_per_contact")
     ));
     for model in STEP_DEPENDENT {
         for steps in [10.0, 20.0, 50.0, 100.0, 200.0, 1000.0, 5000.0] {
@@ -469,7 +469,7 @@ pub fn mfix_check(mut progress: impl FnMut(&str)) -> CaseOutput {
     }
     out.tables.push((
         "kharaz_mfix_check".into(),
-        table(&outcomes, setup.describe(50.0)),
+        table(&outcomes, setup.describe("t_c/50")),
     ));
     out.tables.push(("kharaz_mfix_side_by_side".into(), gap));
     out

@@ -179,10 +179,22 @@ pub const TOLERANCES: &[Tolerance] = &[
         Relative,
     ),
     bound(
-        "Chung & Ooi 5, 7",
+        "Chung & Ooi 5",
         "gross sliding against rigid-body theory, `e` = 1",
         chung_ooi::ELASTIC_SLIDING_TOLERANCE,
         Rms,
+    ),
+    bound(
+        "Chung & Ooi 7",
+        "contact points moving together: tangential velocity against zero (m/s)",
+        chung_ooi::NO_EXCHANGE_TOLERANCE,
+        Absolute,
+    ),
+    bound(
+        "Chung & Ooi 7",
+        "contact points moving together: spin kept",
+        chung_ooi::NO_EXCHANGE_TOLERANCE,
+        Relative,
     ),
     departure(
         "Chung & Ooi 6, 8",
