@@ -382,6 +382,8 @@ where
         if wall_material >= self.materials {
             return SS_ERR_MATERIAL;
         }
+        // The materials that meet these walls by a law, one bit each.
+        let meets = self.with_law[wall_material];
         let work = &mut self.wall_work;
         work.walls.clear();
         for w in 0..walls.count {
@@ -415,7 +417,8 @@ where
             }
             // SAFETY: one type per atom.
             let t = i64::from(unsafe { *atoms.types.add(k) }) - i64::from(atoms.first_type);
-            if t < 0 || t as usize >= self.materials || self.unbuilt[t as usize][wall_material] {
+            // Below the first type, past the table or with no law against the walls: no bit.
+            if !(0..SS_MATERIALS_MAX as i64).contains(&t) || meets >> t & 1 == 0 {
                 report.atoms = [k as i64, -1];
                 return SS_ERR_MATERIAL;
             }
@@ -424,10 +427,10 @@ where
             let position = vector(atoms.position, k);
             // SAFETY: one number per atom.
             let radius = unsafe { *atoms.radius.add(k) };
-            let clear = work
-                .walls
-                .iter()
-                .all(|w| radius - w.wall.distance_to(position) <= F::ZERO);
+            let mut clear = true;
+            for w in &work.walls {
+                clear &= radius - w.wall.distance_to(position) <= F::ZERO;
+            }
             if clear {
                 work.clear.push(k);
                 continue;

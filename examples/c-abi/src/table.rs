@@ -238,10 +238,11 @@ pub(crate) struct Tabled<F: Real, X: Mixing<F>> {
     /// others are another pair style's (LAMMPS `pair_style hybrid`): the step is not checked
     /// for them and the entries refuse them.
     pub(crate) evaluated: Option<Pairs>,
-    /// The pairs of materials the last prepare left without a law (another style's, with
-    /// nothing to mix from, and no material present to meet a wall by them): the walls entry
-    /// refuses them, as the list entry refuses the others' pairs.
-    pub(crate) unbuilt: Pairs,
+    /// For each material, the materials the last prepare gave a law against it, one bit each
+    /// (bit `a` of `with_law[b]`). A pair without one is another style's, with nothing to mix
+    /// from and no material present to meet a wall by it: the walls entry refuses it, as the
+    /// list entry refuses the others' pairs.
+    pub(crate) with_law: [u32; SS_MATERIALS_MAX],
     pub(crate) work: Workspace<F, <X::Law as Law>::State>,
     pub(crate) wall_work: WallWork<F, <X::Law as Law>::State>,
 }
@@ -447,7 +448,7 @@ where
             ready: None,
             walls: Vec::new(),
             evaluated: None,
-            unbuilt: [[false; SS_MATERIALS_MAX]; SS_MATERIALS_MAX],
+            with_law: [0; SS_MATERIALS_MAX],
             work: Workspace {
                 material: Vec::new(),
                 pairs: Vec::new(),
@@ -539,7 +540,7 @@ where
         report: &mut ss_table_report<F>,
     ) -> i32 {
         self.ready = None;
-        let mut unbuilt = [[false; SS_MATERIALS_MAX]; SS_MATERIALS_MAX];
+        let mut with_law = [0u32; SS_MATERIALS_MAX];
         // The first pair the table evaluates (material 0 with itself, for a table of every
         // pair) seeds the table; another style's pairs keep that law, never evaluated.
         let materials = self.materials;
@@ -566,11 +567,7 @@ where
             report.materials = [a as i64, b as i64];
             let law = match self.law(a, b) {
                 Ok(law) => law,
-                Err(_) if !built(a, b) => {
-                    unbuilt[a][b] = true;
-                    unbuilt[b][a] = true;
-                    continue;
-                }
+                Err(_) if !built(a, b) => continue,
                 Err((code, parameter)) => {
                     report.parameter = parameter;
                     return code;
@@ -579,8 +576,10 @@ where
             if table.set(a, b, law).is_err() {
                 return SS_ERR_MATERIAL;
             }
+            with_law[a] |= 1 << b;
+            with_law[b] |= 1 << a;
         }
-        self.unbuilt = unbuilt;
+        self.with_law = with_law;
         // One sphere of each material present, of its lightest mass: the kernel checks the step
         // against every pair of them.
         if !lightest.iter().all(|m| m.is_finite()) {

@@ -1186,6 +1186,45 @@ fn a_material_present_meets_the_walls_by_its_own_law() {
     );
     assert_eq!(evaluate(&but_type_2, &mut states).0, SS_OK);
     assert!(states.iter().any(|&v| v != 0.0), "the floor must touch");
+    // A type below the first, past the table, or past any table (no bit of the walls' mask):
+    // the first atom is named, nothing written.
+    let kept = states.clone();
+    let mut selected = but_type_2.clone();
+    selected[0] = 1;
+    for bad in [0, 4, 17, 40, i32::MAX] {
+        let mut types = host.types.clone();
+        types[0] = bad;
+        let walls = ss_walls {
+            count: 1,
+            walls: floor.as_ptr(),
+            material: 2,
+            states: states.as_mut_ptr(),
+            stride: 7,
+            wall_stride: 7,
+            selected: selected.as_ptr(),
+            bit: 1,
+        };
+        let atoms = ss_atoms {
+            types: types.as_ptr(),
+            ..atoms
+        };
+        let mut report = ss_list_report::default();
+        // SAFETY: valid pointers, as long as they say.
+        let code =
+            unsafe { ss_table_evaluate_walls_f64(table, &atoms, &walls, &loads, 1, &mut report) };
+        assert_eq!(
+            (code, report.atoms),
+            (SS_ERR_MATERIAL, [0, -1]),
+            "type {bad}"
+        );
+        assert_eq!(bits(&states), bits(&kept), "type {bad}");
+    }
+    // Given its coefficients, material 1 meets the walls of material 2 by its own law.
+    // SAFETY: valid pointers.
+    let code = unsafe { ss_table_set_f64(table, 1, 1, &material(1), null_mut()) };
+    assert_eq!(code, SS_OK);
+    assert_eq!(prepare(table, [1e-5, 1e-5, 0.0]).0, SS_OK);
+    assert_eq!(evaluate(&every, &mut states), (SS_OK, [-1, -1]));
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }
