@@ -265,17 +265,7 @@ impl Host {
         edit: impl FnOnce(&mut ss_atoms<f64>, &mut ss_neighbours, &mut ss_history<f64>),
     ) -> (i32, ss_list_report) {
         let views = self.views();
-        let mut atoms = ss_atoms::<f64> {
-            count: self.radius.len(),
-            owned: self.owned,
-            position: self.position.as_ptr(),
-            velocity: self.velocity.as_ptr(),
-            angular_velocity: self.spin.as_ptr(),
-            radius: self.radius.as_ptr(),
-            mass: self.mass.as_ptr(),
-            types: self.types.as_ptr(),
-            first_type: 1,
-        };
+        let mut atoms = self.atoms();
         let mut list = ss_neighbours {
             count: self.list.len(),
             atoms: self.list.as_ptr(),
@@ -304,6 +294,21 @@ impl Host {
             ss_table_evaluate_f64(table, &atoms, &list, &history, &loads, advance, &mut report)
         };
         (code, report)
+    }
+
+    /// The atoms as the C ABI reads them, types from 1.
+    fn atoms(&self) -> ss_atoms<f64> {
+        ss_atoms {
+            count: self.radius.len(),
+            owned: self.owned,
+            position: self.position.as_ptr(),
+            velocity: self.velocity.as_ptr(),
+            angular_velocity: self.spin.as_ptr(),
+            radius: self.radius.as_ptr(),
+            mass: self.mass.as_ptr(),
+            types: self.types.as_ptr(),
+            first_type: 1,
+        }
     }
 
     fn sphere(&self, k: usize) -> ss_sphere<f64> {
@@ -932,26 +937,53 @@ fn the_step_is_checked_against_the_walls_materials() {
     unsafe { ss_table_free_f64(table) };
 }
 
-/// Under `pair_style hybrid` another style owns some pairs of types: a table evaluates the pairs
-/// it is given alone. Material 2 has no coefficients here and is in none of them.
-#[test]
-fn a_table_evaluates_only_the_pairs_it_is_given() {
-    let config = ss_table_config {
+/// A still floor at `z = -0.9 mm`, which the hosts' lowest atoms reach.
+fn floor() -> ss_wall<f64> {
+    ss_wall {
+        point: ss_vec3 {
+            x: 0.0,
+            y: 0.0,
+            z: -0.9e-3,
+        },
+        direction: ss_vec3 {
+            x: 0.0,
+            y: 0.0,
+            z: 1.0,
+        },
+        ..ss_wall::default()
+    }
+}
+
+/// Model AA, three materials.
+fn three_aa() -> ss_table_config<f64> {
+    ss_table_config {
         model: SS_MODEL_AA,
         materials: 3,
         ..Default::default()
-    };
+    }
+}
+
+/// A Model AA table of three materials, coefficients given to those named alone.
+fn three_aa_materials(given: &[usize]) -> *mut ss_table<f64> {
     let mut table = null_mut();
     // SAFETY: valid pointers throughout.
     unsafe {
-        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
-        for m in 0..2 {
+        assert_eq!(ss_table_new_f64(&three_aa(), &mut table), SS_OK);
+        for &m in given {
             assert_eq!(
                 ss_table_set_f64(table, m, m, &material(m), null_mut()),
                 SS_OK
             );
         }
     }
+    table
+}
+
+/// Under `pair_style hybrid` another style owns some pairs of types: a table evaluates the pairs
+/// it is given alone. Material 2 has no coefficients here and is in none of them.
+#[test]
+fn a_table_evaluates_only_the_pairs_it_is_given() {
+    let table = three_aa_materials(&[0, 1]);
     // Every pair: material 2, present, has nothing to mix from.
     assert_eq!(
         prepare(table, [1e-5; 3]),
@@ -964,7 +996,7 @@ fn a_table_evaluates_only_the_pairs_it_is_given() {
 
     // The pairs given give the bits of a table of every pair; a pair of material 2 is refused
     // with its atoms named, nothing changed.
-    let full = table_of(&config);
+    let full = table_of(&three_aa());
     assert_eq!(prepare(full, [1e-5; 3]).0, SS_OK);
     let mut host = Host::new(3, 3);
     let mut reference = host.clone();
@@ -1096,21 +1128,9 @@ fn a_table_evaluates_only_the_pairs_it_is_given() {
 /// it by another pair's law.
 #[test]
 fn a_material_present_meets_the_walls_by_its_own_law() {
-    let config = ss_table_config {
-        model: SS_MODEL_AA,
-        materials: 3,
-        ..Default::default()
-    };
-    let mut table = null_mut();
+    let table = three_aa_materials(&[0, 2]);
     // SAFETY: valid pointers throughout.
     unsafe {
-        assert_eq!(ss_table_new_f64(&config, &mut table), SS_OK);
-        for m in [0, 2] {
-            assert_eq!(
-                ss_table_set_f64(table, m, m, &material(m), null_mut()),
-                SS_OK
-            );
-        }
         assert_eq!(ss_table_set_pairs_f64(table, [0, 0].as_ptr(), 1), SS_OK);
         assert_eq!(ss_table_set_walls_f64(table, [2].as_ptr(), 1), SS_OK);
     }
@@ -1126,40 +1146,18 @@ fn a_material_present_meets_the_walls_by_its_own_law() {
     assert_eq!(prepare(table, [1e-5, 0.0, 0.0]).0, SS_OK);
     let mut host = Host::new(7, 1);
     let n = host.radius.len();
-    let floor = [ss_wall {
-        point: ss_vec3 {
-            x: 0.0,
-            y: 0.0,
-            z: -0.9e-3,
-        },
-        direction: ss_vec3 {
-            x: 0.0,
-            y: 0.0,
-            z: 1.0,
-        },
-        ..ss_wall::default()
-    }];
+    let floor = [floor()];
     let mut states = vec![0.0; 7 * n];
     let every = vec![1; n];
     let but_type_2: Vec<i32> = host.types.iter().map(|&t| i32::from(t != 2)).collect();
-    let atoms = ss_atoms {
-        count: n,
-        owned: host.owned,
-        position: host.position.as_ptr(),
-        velocity: host.velocity.as_ptr(),
-        angular_velocity: host.spin.as_ptr(),
-        radius: host.radius.as_ptr(),
-        mass: host.mass.as_ptr(),
-        types: host.types.as_ptr(),
-        first_type: 1,
-    };
+    let atoms = host.atoms();
     let loads = ss_loads {
         force: host.force.as_mut_ptr(),
         torque: host.torque.as_mut_ptr(),
         newton: 0,
         pair_force: null_mut(),
     };
-    let evaluate = |selected: &[i32], states: &mut [f64]| {
+    let evaluate = |atoms: &ss_atoms<f64>, selected: &[i32], states: &mut [f64]| {
         let walls = ss_walls {
             count: 1,
             walls: floor.as_ptr(),
@@ -1173,58 +1171,42 @@ fn a_material_present_meets_the_walls_by_its_own_law() {
         let mut report = ss_list_report::default();
         // SAFETY: valid pointers, as long as they say.
         let code =
-            unsafe { ss_table_evaluate_walls_f64(table, &atoms, &walls, &loads, 1, &mut report) };
+            unsafe { ss_table_evaluate_walls_f64(table, atoms, &walls, &loads, 1, &mut report) };
         (code, report.atoms)
     };
-    let before = bits(&host.force);
-    assert_eq!(evaluate(&every, &mut states), (SS_ERR_MATERIAL, [1, -1]));
-    assert_eq!(states, vec![0.0; 7 * n]);
     // SAFETY: the forces, `3 n` numbers.
+    let forces = || bits(unsafe { std::slice::from_raw_parts(loads.force, 3 * n) });
+    let before = forces();
     assert_eq!(
-        bits(unsafe { std::slice::from_raw_parts(loads.force, 3 * n) }),
-        before
+        evaluate(&atoms, &every, &mut states),
+        (SS_ERR_MATERIAL, [1, -1])
     );
-    assert_eq!(evaluate(&but_type_2, &mut states).0, SS_OK);
+    assert_eq!(states, vec![0.0; 7 * n]);
+    assert_eq!(forces(), before);
+    assert_eq!(evaluate(&atoms, &but_type_2, &mut states).0, SS_OK);
     assert!(states.iter().any(|&v| v != 0.0), "the floor must touch");
     // A type below the first, past the table, or past any table (no bit of the walls' mask):
     // the first atom is named, nothing written.
-    let kept = states.clone();
+    let (kept, before) = (bits(&states), forces());
     let mut selected = but_type_2.clone();
     selected[0] = 1;
     for bad in [0, 4, 17, 40, i32::MAX] {
         let mut types = host.types.clone();
         types[0] = bad;
-        let walls = ss_walls {
-            count: 1,
-            walls: floor.as_ptr(),
-            material: 2,
-            states: states.as_mut_ptr(),
-            stride: 7,
-            wall_stride: 7,
-            selected: selected.as_ptr(),
-            bit: 1,
-        };
         let atoms = ss_atoms {
             types: types.as_ptr(),
             ..atoms
         };
-        let mut report = ss_list_report::default();
-        // SAFETY: valid pointers, as long as they say.
-        let code =
-            unsafe { ss_table_evaluate_walls_f64(table, &atoms, &walls, &loads, 1, &mut report) };
-        assert_eq!(
-            (code, report.atoms),
-            (SS_ERR_MATERIAL, [0, -1]),
-            "type {bad}"
-        );
-        assert_eq!(bits(&states), bits(&kept), "type {bad}");
+        let refused = evaluate(&atoms, &selected, &mut states);
+        assert_eq!(refused, (SS_ERR_MATERIAL, [0, -1]), "type {bad}");
+        assert_eq!((bits(&states), forces()), (kept.clone(), before.clone()));
     }
     // Given its coefficients, material 1 meets the walls of material 2 by its own law.
     // SAFETY: valid pointers.
     let code = unsafe { ss_table_set_f64(table, 1, 1, &material(1), null_mut()) };
     assert_eq!(code, SS_OK);
     assert_eq!(prepare(table, [1e-5, 1e-5, 0.0]).0, SS_OK);
-    assert_eq!(evaluate(&every, &mut states), (SS_OK, [-1, -1]));
+    assert_eq!(evaluate(&atoms, &every, &mut states), (SS_OK, [-1, -1]));
     // SAFETY: from ss_table_new_f64.
     unsafe { ss_table_free_f64(table) };
 }
@@ -1748,20 +1730,7 @@ fn frictionless_tables_ignore_the_tangential_coefficients() {
 #[test]
 fn walls_give_the_single_wall_calls_bits() {
     let planes = [
-        ss_wall {
-            point: ss_vec3 {
-                x: 0.0,
-                y: 0.0,
-                z: -0.9e-3,
-            },
-            direction: ss_vec3 {
-                x: 0.0,
-                y: 0.0,
-                z: 1.0,
-            },
-            velocity: ss_vec3::default(),
-            ..ss_wall::default()
-        },
+        floor(),
         ss_wall {
             point: ss_vec3 {
                 x: 0.0,
@@ -1816,17 +1785,7 @@ fn walls_give_the_single_wall_calls_bits() {
             let mut expected = host.clone();
             let mut expected_states = states.clone();
             let mut report = ss_list_report::default();
-            let atoms = ss_atoms {
-                count: n,
-                owned: host.owned,
-                position: host.position.as_ptr(),
-                velocity: host.velocity.as_ptr(),
-                angular_velocity: host.spin.as_ptr(),
-                radius: host.radius.as_ptr(),
-                mass: host.mass.as_ptr(),
-                types: host.types.as_ptr(),
-                first_type: 1,
-            };
+            let atoms = host.atoms();
             let ss_walls_of = |states: &mut Vec<f64>| ss_walls {
                 count: 2,
                 walls: walls.as_ptr(),
