@@ -404,7 +404,8 @@ fn coulomb_and_energy_at<F: Float, T: TangentialModel<F>>(
     step_fraction: f64,
 ) -> Result<(), TestCaseError> {
     for wall in [false, true] {
-        let o = collide(c, make, wall, step_fraction)?;
+        let o = collide(c, make, wall, step_fraction)
+            .map_err(|e| named(&format!("{name} (wall: {wall})"), e))?;
         prop_assert!(
             o.coulomb_excess <= 64.0 * epsilon::<F>(),
             "{name}: Coulomb exceeded by {:e}",
@@ -531,10 +532,27 @@ proptest! {
     }
 }
 
+/// Micro-slip's frame invariance, relative to the largest force. Its breakpoints come of
+/// threshold tests (a spring midway is kept where two slipping trials turn apart by more than
+/// a squared sine of 1e-4, which keeps the line within 1.3e-5 of the limit it stands for): a
+/// frame's rounding can tip one, and the profile then differs by up to that much of the
+/// Coulomb limit (`mu` up to 1.5 of the normal force) for the rest of the contact. Seen:
+/// 1.1e-6, a tipped decision as a contact stops sliding, held for the remaining steps.
+const MICRO_SLIP_FRAME_TOLERANCE: f64 = 2e-5;
+
+/// A failure named by the law it is about.
+fn named(law: &str, error: TestCaseError) -> TestCaseError {
+    match error {
+        TestCaseError::Fail(why) => TestCaseError::fail(format!("{law}: {why}")),
+        reject => reject,
+    }
+}
+
 fn frame_invariant<T: TangentialModel<f64>>(
     c: &Collision,
     angle: f64,
     make: impl Fn(MindlinParameters<f64>) -> T,
+    tolerance: f64,
 ) -> Result<(), TestCaseError> {
     // Rotating every vector of a collision about z rotates the forces and the stored spring.
     let (i, j) = c.pair::<f64>();
@@ -572,7 +590,7 @@ fn frame_invariant<T: TangentialModel<f64>>(
                 // contact; a wrong rotation would be off by the force itself.
                 if x.overlap > 1e-10 * (a + b) {
                     prop_assert!(
-                        d.norm_squared().sqrt() <= 1e-6 * scale,
+                        d.norm_squared().sqrt() <= tolerance * scale,
                         "force differs by {:e}",
                         d.norm_squared().sqrt() / scale
                     );
@@ -595,8 +613,9 @@ proptest! {
     #![proptest_config(config())]
     #[test]
     fn mindlin_aa_and_micro_slip_are_frame_invariant(c in collision(), angle in 0.0..std::f64::consts::TAU) {
-        frame_invariant(&c, angle, MindlinAA)?;
-        frame_invariant(&c, angle, MicroSlip::<f64, 8>::new)?;
+        frame_invariant(&c, angle, MindlinAA, 1e-6).map_err(|e| named("mindlin_aa", e))?;
+        frame_invariant(&c, angle, MicroSlip::<f64, 8>::new, MICRO_SLIP_FRAME_TOLERANCE)
+            .map_err(|e| named("micro_slip_8", e))?;
     }
 
     #[test]

@@ -12,7 +12,7 @@
 
 use crate::law::normal::damped_critical_step;
 use crate::law::tangential::{ContactState, rotate_into_tangent_plane};
-use crate::value::backend::MathBackend;
+use crate::value::backend::{MathBackend, inverse_root};
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
@@ -249,7 +249,7 @@ impl<F: Float> RollingModel<F> for ElasticPlasticRolling<F> {
         let limit = contact.limit(self.friction);
         let squared = spring.norm_squared();
         let (torque, kept) = if squared > limit * limit {
-            let capped = spring * (limit * M::inv_sqrt(squared));
+            let capped = spring * (limit * inverse_root::<F, M>(squared));
             (capped, capped)
         } else {
             (spring - spin * self.damping, spring)

@@ -8,7 +8,7 @@ use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
 };
 use crate::law::normal::NormalContact;
-use crate::value::backend::MathBackend;
+use crate::value::backend::{MathBackend, inverse_root};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
 
@@ -74,7 +74,7 @@ impl<F: Float> StoredSpring<F> for TangentialParameters<F> {
                 let longest = self.limit(contact) / self.stiffness();
                 let length_squared = displacement.norm_squared();
                 if length_squared > longest * longest {
-                    displacement * (longest * M::inv_sqrt(length_squared))
+                    displacement * (longest * inverse_root::<F, M>(length_squared))
                 } else {
                     displacement
                 }

@@ -26,7 +26,7 @@ use super::{
     coulomb,
 };
 use crate::law::normal::NormalContact;
-use crate::value::backend::MathBackend;
+use crate::value::backend::{MathBackend, inverse_root};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
 
@@ -176,7 +176,7 @@ impl<F: Float> Breakpoint<F> {
         let squared = self.displacement.norm_squared();
         if self.at_limit && squared > F::ZERO {
             Self {
-                displacement: self.displacement * (self.limit * M::inv_sqrt(squared)),
+                displacement: self.displacement * (self.limit * inverse_root::<F, M>(squared)),
                 ..self
             }
         } else {

@@ -15,7 +15,7 @@ use super::{
     rotate_into_tangent_plane, spring_critical_step,
 };
 use crate::law::normal::{NormalContact, NormalOscillator};
-use crate::value::backend::MathBackend;
+use crate::value::backend::{MathBackend, inverse_root};
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
@@ -136,7 +136,7 @@ impl<F: Float> StoredSpring<F> for MindlinParameters<F> {
             Keep::Capped if sliding => {
                 let length_squared = spring.norm_squared();
                 if length_squared > limit * limit {
-                    spring * (limit * M::inv_sqrt(length_squared))
+                    spring * (limit * inverse_root::<F, M>(length_squared))
                 } else {
                     spring
                 }

@@ -44,7 +44,7 @@ pub use stateless::Stateless;
 pub(crate) use stateless::elapsed_contact_time;
 
 use crate::law::normal::{NormalContact, NormalOscillator};
-use crate::value::backend::MathBackend;
+use crate::value::backend::{MathBackend, inverse_root};
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
 use crate::value::float::Float;
 use crate::value::vector::Vec3;
@@ -298,7 +298,10 @@ pub(crate) fn coulomb<F: Float, M: MathBackend<F>>(
     };
     let length_squared = direction.norm_squared();
     if length_squared < F::INFINITY {
-        return (direction * (limit * M::inv_sqrt(length_squared)), true);
+        return (
+            direction * (limit * inverse_root::<F, M>(length_squared)),
+            true,
+        );
     }
     // A direction too long to square: shrink it by its largest component first (a non-finite
     // one gives a non-finite force, which the evaluation refuses).
