@@ -12,9 +12,9 @@
 
 use crate::law::normal::damped_critical_step;
 use crate::law::tangential::{ContactState, rotate_into_tangent_plane};
-use crate::value::backend::{MathBackend, inverse_root};
+use crate::value::backend::MathBackend;
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
-use crate::value::float::Float;
+use crate::value::float::{Float, inverse_root};
 use crate::value::vector::Vec3;
 
 /// What a rolling slot sees of one contact at one step.

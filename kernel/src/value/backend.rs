@@ -7,8 +7,6 @@
 //! large (see [`Micromath`]) and is measured by the host-tests (`tests/backends.rs`), not
 //! assumed.
 
-use crate::value::float::Float;
-
 /// The transcendental functions the kernel needs, for one precision `F`.
 ///
 /// Implementations must be pure functions of their arguments so the kernel stays deterministic.
@@ -21,19 +19,6 @@ pub trait MathBackend<F>: Copy + Default + core::fmt::Debug + 'static {
     fn atan2(y: F, x: F) -> F;
     /// Natural logarithm of a positive number.
     fn ln(x: F) -> F;
-}
-
-/// `1 / sqrt(x)` for a positive `x`, subnormal ones included. Below `1 / F::MAX` (a length
-/// under 5.4e-20 in f32, as at the creeping end of a small contact) a backend's
-/// `sqrt(x) * (1 / x)` overflows to infinity, so `1 / sqrt(x)` is taken for every subnormal
-/// `x`; a normal `x` keeps the backend's bits.
-#[inline(always)]
-pub(crate) fn inverse_root<F: Float, M: MathBackend<F>>(x: F) -> F {
-    if x >= F::MIN_POSITIVE {
-        M::inv_sqrt(x)
-    } else {
-        F::ONE / M::sqrt(x)
-    }
 }
 
 /// The `libm` crate: pure-Rust ports of musl's math, identical on every target.
@@ -138,40 +123,5 @@ impl MathBackend<f32> for Micromath {
     #[inline(always)]
     fn ln(x: f32) -> f32 {
         micromath::F32(x).ln().0
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{Libm, MathBackend, inverse_root};
-
-    /// A squared length below `1 / F::MAX` (subnormal): the backend's `sqrt(x) * (1 / x)`
-    /// overflows, `inverse_root` stays within an ulp of `1 / sqrt(x)` taken in f64 or exactly.
-    #[test]
-    fn inverse_root_holds_for_subnormal_squares() {
-        for x in [1e-45_f32, 1e-40, 2.9e-39] {
-            assert!(
-                <Libm as MathBackend<f32>>::inv_sqrt(x).is_infinite(),
-                "{x:e}"
-            );
-            let root = inverse_root::<f32, Libm>(x);
-            let exact = 1.0 / libm::sqrt(f64::from(x));
-            assert!(((f64::from(root) - exact) / exact).abs() < 2.0 * f64::from(f32::EPSILON));
-        }
-        for x in [5e-324_f64, 1e-310, 5e-309] {
-            assert!(
-                <Libm as MathBackend<f64>>::inv_sqrt(x).is_infinite(),
-                "{x:e}"
-            );
-            let root = inverse_root::<f64, Libm>(x);
-            assert_eq!(root, 1.0 / libm::sqrt(x), "{x:e}");
-        }
-        // Normal numbers keep the backend's bits.
-        for x in [f32::MIN_POSITIVE, 1e-20, 1.0, 3.0e38] {
-            assert_eq!(
-                inverse_root::<f32, Libm>(x).to_bits(),
-                <Libm as MathBackend<f32>>::inv_sqrt(x).to_bits()
-            );
-        }
     }
 }

@@ -8,8 +8,8 @@ use super::{
     ContactState, Slide, TangentialInput, TangentialModel, TangentialOutput, TangentialParameters,
 };
 use crate::law::normal::NormalContact;
-use crate::value::backend::{MathBackend, inverse_root};
-use crate::value::float::Float;
+use crate::value::backend::MathBackend;
+use crate::value::float::{Float, inverse_root};
 use crate::value::vector::Vec3;
 
 /// The stored tangential spring of one contact: the displacement `xi` of body j's contact point

@@ -26,8 +26,8 @@ use super::{
     coulomb,
 };
 use crate::law::normal::NormalContact;
-use crate::value::backend::{MathBackend, inverse_root};
-use crate::value::float::Float;
+use crate::value::backend::MathBackend;
+use crate::value::float::{Float, inverse_root};
 use crate::value::vector::Vec3;
 
 /// The springs of one micro-slip contact: the breakpoints of its displacement profile, and the

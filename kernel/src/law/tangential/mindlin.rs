@@ -15,9 +15,9 @@ use super::{
     rotate_into_tangent_plane, spring_critical_step,
 };
 use crate::law::normal::{NormalContact, NormalOscillator};
-use crate::value::backend::{MathBackend, inverse_root};
+use crate::value::backend::MathBackend;
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
-use crate::value::float::Float;
+use crate::value::float::{Float, inverse_root};
 use crate::value::vector::Vec3;
 
 /// Mindlin's shear modulus, dashpot and friction, shared by the Mindlin laws.

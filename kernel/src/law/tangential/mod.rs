@@ -44,9 +44,9 @@ pub use stateless::Stateless;
 pub(crate) use stateless::elapsed_contact_time;
 
 use crate::law::normal::{NormalContact, NormalOscillator};
-use crate::value::backend::{MathBackend, inverse_root};
+use crate::value::backend::MathBackend;
 use crate::value::error::{Parameter, ParameterError, non_negative, positive};
-use crate::value::float::Float;
+use crate::value::float::{Float, inverse_root};
 use crate::value::vector::Vec3;
 
 /// Per-contact state a tangential slot keeps between steps. `()` for slots that keep none.
