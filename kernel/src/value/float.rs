@@ -167,7 +167,8 @@ mod tests {
     use crate::value::backend::{Libm, MathBackend};
 
     /// A squared length below `1 / F::MAX` (subnormal): the backend's `sqrt(x) * (1 / x)`
-    /// overflows, `inverse_root` stays within an ulp of `1 / sqrt(x)` taken in f64 or exactly.
+    /// overflows; `inverse_root` is within 2 eps of `1 / sqrt(x)` taken in f64, and exact where that is a
+    /// power of two.
     #[test]
     fn inverse_root_holds_for_subnormal_squares() {
         for x in [1e-45_f32, 1e-40, 2.9e-39] {
@@ -179,13 +180,25 @@ mod tests {
             let exact = 1.0 / libm::sqrt(f64::from(x));
             assert!(((f64::from(root) - exact) / exact).abs() < 2.0 * f64::from(f32::EPSILON));
         }
-        for x in [5e-324_f64, 1e-310, 5e-309] {
-            assert!(
-                <Libm as MathBackend<f64>>::inv_sqrt(x).is_infinite(),
-                "{x:e}"
-            );
-            let root = inverse_root::<f64, Libm>(x);
-            assert_eq!(root, 1.0 / libm::sqrt(x), "{x:e}");
+        // Even powers of two, whose inverse roots are exact: 2^-148 and 2^-130 in f32, 2^-1074
+        // and 2^-1030 in f64.
+        for (x, root) in [(-148, 74), (-130, 65)].map(|(x, r)| {
+            (
+                f32::from_bits(1 << (149 + x)),
+                f32::from_bits((127 + r) << 23),
+            )
+        }) {
+            assert!(<Libm as MathBackend<f32>>::inv_sqrt(x).is_infinite());
+            assert_eq!(inverse_root::<f32, Libm>(x), root, "{x:e}");
+        }
+        for (x, root) in [(-1074, 537), (-1030, 515)].map(|(x, r)| {
+            (
+                f64::from_bits(1 << (1074 + x)),
+                f64::from_bits((1023 + r) << 52),
+            )
+        }) {
+            assert!(<Libm as MathBackend<f64>>::inv_sqrt(x).is_infinite());
+            assert_eq!(inverse_root::<f64, Libm>(x), root, "{x:e}");
         }
         // Normal numbers keep the backend's bits.
         for x in [f32::MIN_POSITIVE, 1e-20, 1.0, 3.0e38] {
